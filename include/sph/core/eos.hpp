@@ -1,0 +1,44 @@
+// Equations of state (seed 2) and the stiffness that gives a chosen speed of sound.
+#pragma once
+
+#include "sph/core/hostdevice.hpp"
+#include "sph/core/options.hpp"
+
+namespace sph {
+
+// Pressure from density. Clamping negative pressure keeps the free surface from tearing
+// apart (particles there lack neighbours, so their density reads low).
+template <class Real>
+SPH_HD Real pressureFromDensity(EquationOfState eos, Real density, Real restDensity,
+                                Real stiffness, bool clampNegative) {
+  Real p;
+  switch (eos) {
+    case EquationOfState::Linear:  // seed 1 eq. 5 with p0 = 0
+      p = stiffness * (density - restDensity);
+      break;
+    case EquationOfState::Ratio:
+      p = stiffness * (density / restDensity - Real(1));
+      break;
+    default: {  // Tait, exponent 7
+      const Real x = density / restDensity;
+      const Real x2 = x * x;
+      p = stiffness * (x2 * x2 * x2 * x - Real(1));
+    }
+  }
+  return (clampNegative && p < Real(0)) ? Real(0) : p;
+}
+
+// The stiffness for which dp/dρ at rest equals c0², i.e. the sound speed is c0.
+inline double stiffnessForSoundSpeed(EquationOfState eos, double soundSpeed, double restDensity) {
+  const double c2 = soundSpeed * soundSpeed;
+  switch (eos) {
+    case EquationOfState::Linear:
+      return c2;  // k = c0²
+    case EquationOfState::Ratio:
+      return restDensity * c2;  // k = ρ0 c0²
+    default:
+      return restDensity * c2 / 7.0;  // B = ρ0 c0² / 7
+  }
+}
+
+}  // namespace sph

@@ -1,0 +1,65 @@
+// Uniform grid cell arithmetic. Cells are cubes of edge `cellSize` (= h) from `origin`;
+// a cell index is x + dims.x (y + dims.y z).
+#pragma once
+
+#include <cstdint>
+
+#include "sph/core/vec.hpp"
+
+namespace sph {
+
+struct GridSpec {
+  Vec3 origin;
+  float cellSize;
+  float inverseCellSize;
+  Int3 dims;
+  std::uint32_t cellCount;
+};
+
+SPH_HD int floorToInt(float v) {
+  const int i = static_cast<int>(v);
+  return (v < static_cast<float>(i)) ? i - 1 : i;
+}
+
+// Not clamped: the caller decides what a position outside the grid means.
+SPH_HD Int3 cellCoordinate(const GridSpec& g, Vec3 p) {
+  return Int3{floorToInt((p.x - g.origin.x) * g.inverseCellSize),
+              floorToInt((p.y - g.origin.y) * g.inverseCellSize),
+              floorToInt((p.z - g.origin.z) * g.inverseCellSize)};
+}
+
+SPH_HD bool insideGrid(const GridSpec& g, Int3 c) {
+  return c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x < g.dims.x && c.y < g.dims.y && c.z < g.dims.z;
+}
+
+SPH_HD int clampInt(int v, int lo, int hi) { return v < lo ? lo : (v > hi ? hi : v); }
+
+SPH_HD Int3 clampToGrid(const GridSpec& g, Int3 c) {
+  return Int3{clampInt(c.x, 0, g.dims.x - 1), clampInt(c.y, 0, g.dims.y - 1),
+              clampInt(c.z, 0, g.dims.z - 1)};
+}
+
+SPH_HD std::uint32_t cellIndex(const GridSpec& g, Int3 c) {
+  return static_cast<std::uint32_t>(c.x) +
+         static_cast<std::uint32_t>(g.dims.x) *
+             (static_cast<std::uint32_t>(c.y) +
+              static_cast<std::uint32_t>(g.dims.y) * static_cast<std::uint32_t>(c.z));
+}
+
+// A grid of cell edge `cellSize` covering [lo, hi]; at least one cell per axis.
+inline GridSpec makeGrid(Vec3 lo, Vec3 hi, float cellSize) {
+  auto cells = [&](float extent) {
+    const int n = static_cast<int>(extent / cellSize) + 1;
+    return n < 1 ? 1 : n;
+  };
+  GridSpec g;
+  g.origin = lo;
+  g.cellSize = cellSize;
+  g.inverseCellSize = 1.0f / cellSize;
+  g.dims = Int3{cells(hi.x - lo.x), cells(hi.y - lo.y), cells(hi.z - lo.z)};
+  g.cellCount = static_cast<std::uint32_t>(g.dims.x) * static_cast<std::uint32_t>(g.dims.y) *
+                static_cast<std::uint32_t>(g.dims.z);
+  return g;
+}
+
+}  // namespace sph

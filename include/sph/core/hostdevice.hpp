@@ -1,0 +1,15 @@
+// One execution-space macro for every function that runs on both the CPU and the GPU.
+#pragma once
+
+#if defined(__CUDACC__)
+#define SPH_HD __host__ __device__ __forceinline__
+#else
+#define SPH_HD inline
+#endif
+
+// A per-particle functor written once for both backends: captures by value.
+#if defined(__CUDACC__)
+#define SPH_LAMBDA [=] __host__ __device__
+#else
+#define SPH_LAMBDA [=]
+#endif

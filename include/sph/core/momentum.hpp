@@ -1,0 +1,49 @@
+// Pairwise accelerations of the momentum equation. `gradW` is ∇_i W(x_i - x_j); `rij` is
+// x_i - x_j, `vij` is v_i - v_j. Each pair term is antisymmetric when multiplied by the mass
+// of i, so a sum over all pairs conserves linear momentum.
+#pragma once
+
+#include "sph/core/vec.hpp"
+
+namespace sph {
+
+// Seed 2's symmetric form: -m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W.
+SPH_HD Vec3 pressureAccelerationSymmetric(float massJ, float pressureI, float densityI,
+                                          float pressureJ, float densityJ, Vec3 gradW) {
+  const float s = pressureI / (densityI * densityI) + pressureJ / (densityJ * densityJ);
+  return gradW * (-massJ * s);
+}
+
+// Seed 1 eq. 6 divided by ρ_i: -m_j (p_i + p_j) / (2 ρ_i ρ_j) ∇W.
+SPH_HD Vec3 pressureAccelerationPaper(float massJ, float pressureI, float densityI,
+                                      float pressureJ, float densityJ, Vec3 gradW) {
+  const float s = (pressureI + pressureJ) / (2.0f * densityI * densityJ);
+  return gradW * (-massJ * s);
+}
+
+// Akinci et al. 2012, eq. 10: a boundary particle of volume ψ_b acts with mass ρ0 ψ_b and
+// mirrors the fluid particle's pressure.
+SPH_HD Vec3 boundaryPressureAcceleration(float boundaryMass, float pressureI, float densityI,
+                                         Vec3 gradW) {
+  return gradW * (-boundaryMass * pressureI / (densityI * densityI));
+}
+
+// Seed 1 eq. 7 divided by ρ_i (Müller 2003): μ m_j (v_j - v_i) / (ρ_i ρ_j) ∇²W.
+SPH_HD Vec3 mullerViscosityAcceleration(float dynamicViscosity, float massJ, float densityI,
+                                        float densityJ, Vec3 vij, float laplacianW) {
+  return vij * (-dynamicViscosity * massJ * laplacianW / (densityI * densityJ));
+}
+
+// Monaghan 1992 artificial viscosity (seed 2's form): acts only on approaching pairs.
+//   a_i = m_j α h c0 (v_ij·r_ij) / (ρ̄_ij (r² + 0.01 h²)) ∇W
+SPH_HD Vec3 artificialViscosityAcceleration(float alpha, float soundSpeed, float h, float massJ,
+                                            float densityI, float densityJ, Vec3 vij, Vec3 rij,
+                                            float r2, Vec3 gradW) {
+  const float approach = dot(vij, rij);
+  if (approach >= 0.0f) return Vec3{0.0f, 0.0f, 0.0f};
+  const float meanDensity = 0.5f * (densityI + densityJ);
+  const float mu = h * approach / (r2 + 0.01f * h * h);
+  return gradW * (massJ * alpha * soundSpeed * mu / meanDensity);
+}
+
+}  // namespace sph

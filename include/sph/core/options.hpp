@@ -1,0 +1,11 @@
+// The method choices a scene makes; stages branch on them once per pass, never per pair.
+#pragma once
+
+namespace sph {
+
+enum class KernelKind { Muller, CubicSpline, WendlandC2 };
+enum class EquationOfState { Linear, Ratio, Tait };  // k(ρ-ρ0), k(ρ/ρ0-1), B((ρ/ρ0)^7-1)
+enum class PressureForm { Paper, Symmetric };         // (p_i+p_j)/(2ρ_j) or p_i/ρ_i²+p_j/ρ_j²
+enum class ViscosityModel { Muller, Artificial };
+
+}  // namespace sph

@@ -1,0 +1,32 @@
+// Time step conditions for explicit weakly-compressible SPH (Monaghan 1992; Morris 1997).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+namespace sph {
+
+// Sound must not cross more than a fraction of h per step.
+inline double cflTimeStep(double cfl, double h, double soundSpeed, double maxSpeed) {
+  return cfl * h / (soundSpeed + maxSpeed);
+}
+
+// A particle must not move more than a fraction of h under its acceleration.
+inline double forceTimeStep(double factor, double h, double maxAcceleration) {
+  return maxAcceleration > 0.0 ? factor * std::sqrt(h / maxAcceleration) : HUGE_VAL;
+}
+
+// Explicit diffusion is stable below h² / (2 d ν); `factor` holds the margin.
+inline double viscousTimeStep(double factor, double h, double kinematicViscosity) {
+  return kinematicViscosity > 0.0 ? factor * h * h / kinematicViscosity : HUGE_VAL;
+}
+
+// Speed of sound about ten times the largest expected speed keeps density errors near 1 %.
+inline double soundSpeedForMaxSpeed(double maxExpectedSpeed) { return 10.0 * maxExpectedSpeed; }
+
+// Largest speed of a column of height H falling freely: sqrt(2 g H).
+inline double freeFallSpeed(double gravity, double height) {
+  return std::sqrt(2.0 * std::max(gravity, 0.0) * std::max(height, 0.0));
+}
+
+}  // namespace sph

@@ -1,0 +1,34 @@
+// Errors the library reports to its callers. The command line maps them to exit codes:
+// InputError → 2, SimulationFailure → 3.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace sph {
+
+// Bad input: the message names the file, the key and what was expected.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The simulation left the physical regime (NaN, infinity, density error past the bound).
+class SimulationFailure : public std::runtime_error {
+ public:
+  SimulationFailure(const std::string& message, std::uint64_t step, std::uint32_t particleId,
+                    std::string quantity)
+      : std::runtime_error(message), step_(step), particleId_(particleId),
+        quantity_(std::move(quantity)) {}
+  std::uint64_t step() const { return step_; }
+  std::uint32_t particleId() const { return particleId_; }
+  const std::string& quantity() const { return quantity_; }
+
+ private:
+  std::uint64_t step_;
+  std::uint32_t particleId_;
+  std::string quantity_;
+};
+
+}  // namespace sph

@@ -1,0 +1,27 @@
+// A host-side copy of the particles at one instant, ordered by stable particle id: what the
+// writers in `io` and embedding applications read.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace sph {
+
+enum class ParticleKind : std::uint8_t { Fluid = 0, Boundary = 1 };
+
+struct ParticleFrame {
+  double time = 0.0;
+  std::uint64_t step = 0;
+  // One entry per particle (n = id.size()); vectors hold x, y, z consecutively (n × 3).
+  std::vector<std::uint32_t> id;
+  std::vector<float> position;
+  std::vector<float> velocity;
+  std::vector<float> density;   // kg/m³
+  std::vector<float> pressure;  // Pa
+  std::vector<std::uint8_t> kind;
+  std::vector<std::int32_t> object;  // -1 for fluid and static walls
+
+  std::size_t size() const { return id.size(); }
+};
+
+}  // namespace sph

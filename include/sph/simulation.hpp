@@ -1,0 +1,80 @@
+// The library's entry point: a fluid simulation built from a Scene.
+//
+//   sph::Simulation sim(scene);
+//   while (sim.time() < 1.0) sim.step();
+//   sph::ParticleFrame frame = sim.frame();
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+
+#include "sph/frame.hpp"
+#include "sph/scene.hpp"
+#include "sph/stats.hpp"
+
+namespace sph {
+
+// The values a run uses, derived from the scene (seed 1 §8.1) unless the scene set them.
+struct Calibration {
+  double spacing = 0.0;          // d, m
+  double supportRadius = 0.0;    // h, m
+  double mass = 0.0;             // kg per fluid particle
+  double maxExpectedSpeed = 0.0; // m/s
+  double soundSpeed = 0.0;       // c0, m/s
+  double stiffness = 0.0;        // k or B of the equation of state
+  double kinematicViscosity = 0.0;  // ν used by the viscous time step condition, m²/s
+  double initialDt = 0.0;        // s
+  bool massFromScene = false;
+  bool maxExpectedSpeedFromScene = false;
+  bool soundSpeedFromScene = false;
+  bool stiffnessFromScene = false;
+  std::uint64_t fluidParticles = 0;
+  std::uint64_t boundaryParticles = 0;
+};
+
+// Wall-clock milliseconds of each stage of the last step (DESIGN.md: the step's profile).
+struct StepProfile {
+  double buildGrid = 0.0;
+  double densityPressure = 0.0;
+  double forces = 0.0;
+  double timeStep = 0.0;
+  double integrate = 0.0;
+  double total() const { return buildGrid + densityPressure + forces + timeStep + integrate; }
+};
+
+class Simulation {
+ public:
+  // Throws InputError if the scene cannot be simulated (e.g. no speed of sound derivable).
+  explicit Simulation(const Scene& scene);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // One time step, shortened so as not to pass `until`. Throws SimulationFailure on a NaN,
+  // an infinity or a density error past the scene's bound; the state is then the last good
+  // one.
+  void step(double until = std::numeric_limits<double>::infinity());
+  // Steps until time() reaches t exactly.
+  void advanceTo(double t);
+
+  double time() const;
+  std::uint64_t stepCount() const;
+  double lastDt() const;
+  std::uint64_t removedCount() const;  // fluid particles that left the domain
+  std::uint64_t fluidCount() const;
+  const Scene& scene() const;
+  const Calibration& calibration() const;
+  const StepProfile& lastProfile() const;
+
+  // Statistics of the current state; wallMsPerStep is left 0 for the caller to fill.
+  FrameStats stats() const;
+  // The particles ordered by id: fluid first, then walls if asked.
+  ParticleFrame frame(bool includeBoundary = true) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sph

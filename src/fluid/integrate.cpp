@@ -1,0 +1,41 @@
+#include "backend/cpu_parallel.hpp"
+#include "fluid/stages.hpp"
+
+namespace sph::fluid {
+
+namespace {
+
+// Seed 2's box: a particle past a face is put back on it, its normal velocity reversed and
+// scaled by the damping.
+SPH_HD void reflect(float& x, float& v, float lo, float hi, float damping) {
+  if (x < lo) {
+    x = lo;
+    if (v < 0.0f) v = -v * damping;
+  } else if (x > hi) {
+    x = hi;
+    if (v > 0.0f) v = -v * damping;
+  }
+}
+
+}  // namespace
+
+void integrate(FluidParticles& fluid, float dt, const DomainParameters& domain) {
+  Vec4* position = fluid.position.data();
+  Vec4* velocity = fluid.velocity.data();
+  const Vec4* acceleration = fluid.acceleration.data();
+  const DomainParameters d = domain;
+
+  backend::forEach(fluid.count, SPH_LAMBDA(std::size_t i) {
+    Vec3 v = xyz(velocity[i]) + xyz(acceleration[i]) * dt;
+    Vec3 x = xyz(position[i]) + v * dt;
+    if (d.dampedBox) {
+      reflect(x.x, v.x, d.min.x, d.max.x, d.damping);
+      reflect(x.y, v.y, d.min.y, d.max.y, d.damping);
+      reflect(x.z, v.z, d.min.z, d.max.z, d.damping);
+    }
+    velocity[i] = makeVec4(v);
+    position[i] = makeVec4(x);
+  });
+}
+
+}  // namespace sph::fluid

@@ -1,0 +1,28 @@
+// Visits the particles in the 27 cells around a position. Cells along x are adjacent in
+// memory, so each row of three cells is one contiguous range (9 ranges, not 27).
+#pragma once
+
+#include <cstdint>
+
+#include "sph/core/grid.hpp"
+
+namespace sph::fluid {
+
+template <class Visit>
+SPH_HD void forEachNeighbor(const GridSpec& grid, const std::uint32_t* cellStart, Vec3 p,
+                            Visit&& visit) {
+  const Int3 c = clampToGrid(grid, cellCoordinate(grid, p));
+  const int x0 = c.x > 0 ? c.x - 1 : 0;
+  const int x1 = c.x + 1 < grid.dims.x ? c.x + 1 : grid.dims.x - 1;
+  for (int z = c.z - 1; z <= c.z + 1; ++z) {
+    if (z < 0 || z >= grid.dims.z) continue;
+    for (int y = c.y - 1; y <= c.y + 1; ++y) {
+      if (y < 0 || y >= grid.dims.y) continue;
+      const std::uint32_t begin = cellStart[cellIndex(grid, Int3{x0, y, z})];
+      const std::uint32_t end = cellStart[cellIndex(grid, Int3{x1, y, z}) + 1];
+      for (std::uint32_t j = begin; j < end; ++j) visit(j);
+    }
+  }
+}
+
+}  // namespace sph::fluid

@@ -1,0 +1,38 @@
+// The numbers every pass reads, derived once by sim/calibration. Passed by value to the
+// per-particle code (constant memory on the GPU, seed 1 §5.3).
+#pragma once
+
+#include "sph/core/grid.hpp"
+#include "sph/core/options.hpp"
+#include "sph/core/vec.hpp"
+
+namespace sph::fluid {
+
+struct FluidParameters {
+  KernelKind kernel;
+  EquationOfState eos;
+  PressureForm pressureForm;
+  ViscosityModel viscosityModel;
+  bool clampNegativePressure;
+  float h;                 // support radius, m
+  float mass;              // per fluid particle, kg
+  float restDensity;       // kg/m³
+  float stiffness;         // k or B of the equation of state
+  float soundSpeed;        // c0, m/s
+  float viscosity;         // μ (Müller) or α (artificial)
+  float wallFriction;      // scale of the viscous term against boundary particles
+  float surfaceTension;    // σ, N/m
+  float surfaceThreshold;  // |∇c| above which a particle is on the surface, 1/m
+  Vec3 gravity;            // m/s²
+};
+
+// The explicit domain: what lies outside is removed or clamped; the seed's damped box
+// reflects at its faces.
+struct DomainParameters {
+  Vec3 min, max;
+  bool clampOutside;
+  bool dampedBox;
+  float damping;
+};
+
+}  // namespace sph::fluid

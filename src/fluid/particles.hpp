@@ -1,0 +1,48 @@
+// Particle arrays as structures of arrays, grouped by the stage that writes them.
+#pragma once
+
+#include <cstdint>
+
+#include "backend/buffer.hpp"
+#include "sph/core/grid.hpp"
+#include "sph/core/vec.hpp"
+
+namespace sph::fluid {
+
+using backend::Buffer;
+
+// Fluid particles, reordered by cell every step so neighbour loops read memory in order.
+struct FluidParticles {
+  std::size_t count = 0;
+  // state, reordered by buildGrid (n)
+  Buffer<Vec4> position;  // xyz, w unused
+  Buffer<Vec4> velocity;  // xyz, w unused
+  Buffer<std::uint32_t> id;  // stable particle id
+  // computed by computeDensityAndPressure (n)
+  Buffer<float> density;
+  Buffer<float> pressure;
+  // computed by computeForces (n)
+  Buffer<Vec4> acceleration;  // xyz; w = |∇c|, the colour-field gradient (seed 1 eq. 12)
+  // scratch of buildGrid (n)
+  Buffer<std::uint32_t> cell;
+  Buffer<std::uint32_t> order;
+  Buffer<Vec4> scratch4;
+  Buffer<std::uint32_t> scratchId;
+};
+
+// Static wall particles (Akinci et al. 2012), sorted by cell once at set-up.
+struct BoundaryParticles {
+  std::size_t count = 0;
+  Buffer<Vec4> position;        // xyz; w = volume ψ_b = 1 / Σ_k W_bk, m³
+  Buffer<std::uint32_t> id;     // stable particle id
+  Buffer<std::uint32_t> cellStart;  // cellCount + 1
+};
+
+// The uniform grid over the fluid: particles of cell c are [cellStart[c], cellStart[c+1]).
+// The extra last bin holds particles outside the grid, which buildGrid drops.
+struct Grid {
+  GridSpec spec;
+  Buffer<std::uint32_t> cellStart;  // cellCount + 2
+};
+
+}  // namespace sph::fluid

@@ -1,0 +1,53 @@
+// The stages of a fluid step, one file each. Each says what it reads and what it writes.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "fluid/parameters.hpp"
+#include "fluid/particles.hpp"
+
+namespace sph::fluid {
+
+// Reads position, velocity, id. Writes them reordered by cell, grid.cellStart, count.
+// Particles outside the domain are clamped back or removed; returns how many were removed.
+std::size_t buildGrid(FluidParticles& fluid, Grid& grid, const DomainParameters& domain);
+
+// Sorts the wall particles by cell of `grid` and computes each one's volume ψ_b (Akinci
+// et al. 2012, eq. 4). Once, at set-up.
+void prepareBoundary(BoundaryParticles& boundary, const GridSpec& grid,
+                     const FluidParameters& params);
+
+// Reads position, boundary. Writes density and pressure (seed 1 Algorithm 1).
+void computeDensityAndPressure(FluidParticles& fluid, const Grid& grid,
+                               const BoundaryParticles& boundary, const FluidParameters& params);
+
+// Reads position, velocity, density, pressure, boundary. Writes acceleration: pressure,
+// viscosity, surface tension and gravity in one pass (seed 1 Algorithm 2), and |∇c|.
+void computeForces(FluidParticles& fluid, const Grid& grid, const BoundaryParticles& boundary,
+                   const FluidParameters& params);
+
+// What the time step and the failure check need, reduced over all fluid particles.
+struct StepMeasures {
+  float maxSpeed = 0.0f;
+  float maxAcceleration = 0.0f;
+  float maxDensityError = 0.0f;  // max |ρ/ρ0 - 1|
+  bool finite = true;            // no NaN or infinity in velocity, acceleration, density
+};
+StepMeasures measureStep(const FluidParticles& fluid, float restDensity);
+
+// The first particle (lowest id) whose state is not finite or whose density error exceeds
+// `maxDensityError`; names the quantity. Slow path, only after a failed measure.
+struct BadParticle {
+  bool found = false;
+  std::uint32_t id = 0;
+  const char* quantity = "";
+  float value = 0.0f;
+};
+BadParticle findBadParticle(const FluidParticles& fluid, float restDensity,
+                            float maxDensityError);
+
+// Symplectic Euler: v += dt a, then x += dt v; the seed's damped box if enabled.
+void integrate(FluidParticles& fluid, float dt, const DomainParameters& domain);
+
+}  // namespace sph::fluid

@@ -1,0 +1,31 @@
+// A ParaView collection (.pvd) that lists a run's frames with their times, so ParaView plays them
+// against simulated time rather than frame number.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace sph::io {
+
+class PvdSeries {
+ public:
+  // Nothing is written until the first add.
+  explicit PvdSeries(std::filesystem::path pvdFile);
+
+  // Appends a frame (`relativeFile` relative to the .pvd's folder) and rewrites the whole
+  // collection atomically, so the .pvd on disk is valid after every frame even if the run dies.
+  // Throws std::runtime_error naming the path when it cannot be written.
+  void add(double time, const std::string& relativeFile);
+
+ private:
+  struct Entry {
+    double time;
+    std::string file;
+  };
+
+  std::filesystem::path pvdFile_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace sph::io

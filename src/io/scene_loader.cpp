@@ -1,0 +1,210 @@
+#include "io/scene_loader.hpp"
+
+#include <fstream>
+#include <system_error>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "io/scene_overrides.hpp"
+#include "io/scene_reader.hpp"
+#include "io/scene_schema.hpp"
+#include "sph/error.hpp"
+
+namespace sph::io {
+namespace {
+
+using nlohmann::json;
+
+constexpr NumberRule kSupportRatio{1, 4, false, false};
+
+AxisBox readBox(const ObjectReader& in) { return {in.requiredVec3("min"), in.requiredVec3("max")}; }
+
+DomainDesc readDomain(const ObjectReader& in) {
+  DomainDesc domain;
+  domain.box = readBox(in);
+  domain.outside = in.choice("outside", domain.outside, kOutsideNames);
+  domain.dampedBox = in.boolean("damped_box", domain.dampedBox);
+  domain.damping = in.number("damping", domain.damping, kClosedUnit);
+  return domain;
+}
+
+void readViscosity(const ObjectReader& in, FluidDesc& fluid) {
+  fluid.viscosityModel = in.choice("model", fluid.viscosityModel, kViscosityNames);
+  fluid.viscosity = in.number("value", fluid.viscosity, kNonNegative);
+  fluid.wallFriction = in.number("wall_friction", fluid.wallFriction, kNonNegative);
+}
+
+FluidDesc readFluid(const ObjectReader& in) {
+  FluidDesc fluid;
+  fluid.restDensity = in.number("rest_density", fluid.restDensity, kPositive);
+  fluid.spacing = in.number("spacing", fluid.spacing, kPositive);
+  fluid.supportRatio = in.number("support_ratio", fluid.supportRatio, kSupportRatio);
+  fluid.kernel = in.choice("kernel", fluid.kernel, kKernelNames);
+  fluid.eos = in.choice("eos", fluid.eos, kEosNames);
+  fluid.clampNegativePressure = in.boolean("clamp_negative_pressure", fluid.clampNegativePressure);
+  fluid.pressureForm = in.choice("pressure_form", fluid.pressureForm, kPressureFormNames);
+  readViscosity(in.object("viscosity"), fluid);
+  const ObjectReader tension = in.object("surface_tension");
+  fluid.surfaceTension = tension.number("coefficient", fluid.surfaceTension, kNonNegative);
+  fluid.surfaceThreshold = tension.number("threshold", fluid.surfaceThreshold, kPositive);
+  for (const ObjectReader& blockIn : in.objectArray("blocks", /*required=*/true,
+                                                    /*nonEmpty=*/true)) {
+    FluidBlock block;
+    block.box = readBox(blockIn);
+    block.velocity = blockIn.vec3("velocity", block.velocity);
+    fluid.blocks.push_back(block);
+  }
+  return fluid;
+}
+
+std::vector<WallTank> readWalls(const ObjectReader& root) {
+  std::vector<WallTank> walls;
+  for (const ObjectReader& in : root.objectArray("walls", /*required=*/false,
+                                                 /*nonEmpty=*/false)) {
+    in.choice("type", WallType::Tank, kWallTypeNames);
+    WallTank wall;
+    wall.box = readBox(in);
+    wall.layers = in.integer("layers", wall.layers, 1, 4);
+    wall.closed = in.boolean("closed", wall.closed);
+    walls.push_back(wall);
+  }
+  return walls;
+}
+
+CalibrationDesc readCalibration(const ObjectReader& in) {
+  CalibrationDesc calibration;
+  calibration.mass = in.optionalNumber("mass", kPositive);
+  calibration.maxExpectedSpeed = in.optionalNumber("max_expected_speed", kPositive);
+  calibration.speedOfSound = in.optionalNumber("speed_of_sound", kPositive);
+  calibration.stiffness = in.optionalNumber("stiffness", kPositive);
+  return calibration;
+}
+
+TimeDesc readTime(const ObjectReader& in) {
+  TimeDesc time;
+  time.duration = in.number("duration", time.duration, kPositive);
+  time.cfl = in.number("cfl", time.cfl, kUnitStep);
+  time.forceFactor = in.number("force_factor", time.forceFactor, kUnitStep);
+  time.viscousFactor = in.number("viscous_factor", time.viscousFactor, kUnitStep);
+  time.maxDt = in.number("max_dt", time.maxDt, kPositive);
+  time.fixedDt = in.optionalNumber("fixed_dt", kPositive);
+  return time;
+}
+
+OutputDesc readOutput(const ObjectReader& in) {
+  OutputDesc output;
+  output.fps = in.number("fps", output.fps, kPositive);
+  output.format = in.choice("format", output.format, kFormatNames);
+  return output;
+}
+
+FailureDesc readFailure(const ObjectReader& in) {
+  FailureDesc failure;
+  failure.maxDensityError = in.number("max_density_error", failure.maxDensityError, kPositive);
+  return failure;
+}
+
+// `path` names the object holding the box's "min" and "max".
+void checkBoxOrder(const ReadContext& context, const AxisBox& box, const std::string& path) {
+  const std::string minKey = joinKey(path, "min");
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!(box.max[axis] > box.min[axis])) {
+      context.fail(joinKey(path, "max"),
+                   "expected a point above " + minKey + " " + formatVec3(box.min) +
+                       " on every axis, got " + formatVec3(box.max),
+                   {minKey});
+    }
+  }
+}
+
+void checkInsideDomain(const ReadContext& context, const AxisBox& box, const std::string& path,
+                       const AxisBox& domain) {
+  const std::pair<const char*, const Vec3d*> corners[] = {{"min", &box.min}, {"max", &box.max}};
+  for (const auto& [key, corner] : corners) {
+    for (int axis = 0; axis < 3; ++axis) {
+      const double x = (*corner)[axis];
+      if (x < domain.min[axis] || x > domain.max[axis]) {
+        context.fail(joinKey(path, key),
+                     "expected a point inside the domain box " + formatVec3(domain.min) +
+                         " to " + formatVec3(domain.max) + ", got " + formatVec3(*corner),
+                     {"domain.min", "domain.max"});
+      }
+    }
+  }
+}
+
+void checkGeometry(const ReadContext& context, const Scene& scene) {
+  checkBoxOrder(context, scene.domain.box, "domain");
+  for (std::size_t i = 0; i < scene.fluid.blocks.size(); ++i) {
+    const std::string path = joinIndex("fluid.blocks", i);
+    checkBoxOrder(context, scene.fluid.blocks[i].box, path);
+    checkInsideDomain(context, scene.fluid.blocks[i].box, path, scene.domain.box);
+  }
+  // The wall box is the tank's inner faces; its particle layers lie outside it.
+  for (std::size_t i = 0; i < scene.walls.size(); ++i) {
+    const std::string path = joinIndex("walls", i);
+    checkBoxOrder(context, scene.walls[i].box, path);
+    checkInsideDomain(context, scene.walls[i].box, path, scene.domain.box);
+  }
+}
+
+// nlohmann's messages start with "[json.exception.parse_error.101] "; the rest is for people.
+std::string withoutExceptionTag(const std::string& message) {
+  if (message.rfind("[json.exception.", 0) == 0) {
+    const std::size_t end = message.find("] ");
+    if (end != std::string::npos) return message.substr(end + 2);
+  }
+  return message;
+}
+
+}  // namespace
+
+Scene parseScene(const json& document, const std::string& sourceName,
+                 const std::vector<std::string>& overrides) {
+  if (!document.is_object()) {
+    throw InputError(sourceName + ": expected a JSON object at the top level, got " +
+                     describeValue(document));
+  }
+  json resolved = document;
+  std::vector<AppliedOverride> applied = applyOverrides(resolved, overrides, sourceName);
+  const ReadContext context(sourceName, std::move(applied));
+  const ObjectReader root(context, &resolved, "", sceneSchema());
+
+  Scene scene;
+  scene.sourcePath = sourceName;
+  scene.name = root.string("name", scene.name);
+  scene.description = root.string("description", scene.description);
+  scene.domain = readDomain(root.requiredObject("domain"));
+  scene.gravity = root.vec3("gravity", scene.gravity);
+  scene.fluid = readFluid(root.requiredObject("fluid"));
+  scene.walls = readWalls(root);
+  scene.calibration = readCalibration(root.object("calibration"));
+  scene.time = readTime(root.object("time"));
+  scene.output = readOutput(root.object("output"));
+  scene.failure = readFailure(root.object("failure"));
+  checkGeometry(context, scene);
+  return scene;
+}
+
+Scene loadScene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  const std::string name = file.string();
+  std::error_code error;
+  if (!std::filesystem::exists(file, error)) {
+    throw InputError(name + ": cannot read the scene file: it does not exist");
+  }
+  if (std::filesystem::is_directory(file, error)) {
+    throw InputError(name + ": cannot read the scene file: it is a directory");
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(name + ": cannot open the scene file for reading");
+  json document;
+  try {
+    document = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InputError(name + ": invalid JSON: " + withoutExceptionTag(e.what()));
+  }
+  return parseScene(document, name, overrides);
+}
+
+}  // namespace sph::io

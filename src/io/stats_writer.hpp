@@ -1,0 +1,33 @@
+// stats.csv: one row of FrameStats per output frame (DESIGN.md's command-line contract).
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "sph/stats.hpp"
+
+namespace sph::io {
+
+class StatsWriter {
+ public:
+  // Creates (truncates) the file and writes the header. Throws std::runtime_error naming the path
+  // and the system error when the file cannot be opened or written.
+  explicit StatsWriter(std::filesystem::path csvFile);
+
+  // Writes one row and flushes it, so every row appended is on disk even if the process dies
+  // right after.
+  void append(const FrameStats& stats);
+
+ private:
+  struct FileCloser {
+    void operator()(std::FILE* file) const { std::fclose(file); }
+  };
+
+  void flushOrThrow();
+
+  std::filesystem::path path_;
+  std::unique_ptr<std::FILE, FileCloser> file_;
+};
+
+}  // namespace sph::io

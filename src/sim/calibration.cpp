@@ -1,0 +1,148 @@
+#include "sim/calibration.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/sampling.hpp"
+#include "sph/core/eos.hpp"
+#include "sph/core/kernels.hpp"
+#include "sph/core/time_step.hpp"
+#include "sph/error.hpp"
+
+namespace sph::sim {
+
+namespace {
+
+template <class Kernels>
+double latticeSum(const Kernels& kernels, double h, double spacing) {
+  const int reach = static_cast<int>(std::ceil(h / spacing));
+  double sum = 0.0;
+  for (int k = -reach; k <= reach; ++k)
+    for (int j = -reach; j <= reach; ++j)
+      for (int i = -reach; i <= reach; ++i)
+        sum += kernels.W(spacing * spacing * double(i * i + j * j + k * k));
+  return sum;
+}
+
+double gravityMagnitude(const Scene& scene) {
+  const auto& g = scene.gravity;
+  return std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+}
+
+// Height of the highest fluid above the lowest floor, along gravity.
+double fallHeight(const Scene& scene) {
+  const int up = upAxisOf(scene.gravity);
+  const double sign = scene.gravity[up] <= 0.0 ? 1.0 : -1.0;  // +1 when "up" is +axis
+  auto height = [&](double coordinate) { return sign * coordinate; };
+  double top = -HUGE_VAL, floor = HUGE_VAL;
+  for (const auto& block : scene.fluid.blocks) {
+    top = std::max({top, height(block.box.min[up]), height(block.box.max[up])});
+    floor = std::min({floor, height(block.box.min[up]), height(block.box.max[up])});
+  }
+  for (const auto& tank : scene.walls)
+    floor = std::min({floor, height(tank.box.min[up]), height(tank.box.max[up])});
+  if (scene.domain.dampedBox)
+    floor = std::min({floor, height(scene.domain.box.min[up]), height(scene.domain.box.max[up])});
+  return top > floor ? top - floor : 0.0;
+}
+
+double largestBlockSpeed(const Scene& scene) {
+  double v = 0.0;
+  for (const auto& block : scene.fluid.blocks) {
+    const auto& u = block.velocity;
+    v = std::max(v, std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
+  }
+  return v;
+}
+
+}  // namespace
+
+double latticeKernelSum(KernelKind kernel, double h, double spacing) {
+  switch (kernel) {
+    case KernelKind::CubicSpline:
+      return latticeSum(CubicSplineKernels<double>::make(h), h, spacing);
+    case KernelKind::WendlandC2:
+      return latticeSum(WendlandC2Kernels<double>::make(h), h, spacing);
+    default:
+      return latticeSum(MullerKernels<double>::make(h), h, spacing);
+  }
+}
+
+Calibration calibrate(const Scene& scene) {
+  const FluidDesc& f = scene.fluid;
+  const CalibrationDesc& c = scene.calibration;
+  Calibration out;
+  out.spacing = f.spacing;
+  out.supportRadius = f.supportRatio * f.spacing;
+
+  out.massFromScene = c.mass.has_value();
+  out.mass = c.mass ? *c.mass
+                    : f.restDensity / latticeKernelSum(f.kernel, out.supportRadius, f.spacing);
+
+  out.maxExpectedSpeedFromScene = c.maxExpectedSpeed.has_value();
+  const double v0 = largestBlockSpeed(scene);
+  const double fall = freeFallSpeed(gravityMagnitude(scene), fallHeight(scene));
+  out.maxExpectedSpeed = c.maxExpectedSpeed ? *c.maxExpectedSpeed : std::sqrt(v0 * v0 + fall * fall);
+
+  out.soundSpeedFromScene = c.speedOfSound.has_value();
+  if (c.speedOfSound) {
+    out.soundSpeed = *c.speedOfSound;
+  } else if (out.maxExpectedSpeed > 0.0) {
+    out.soundSpeed = soundSpeedForMaxSpeed(out.maxExpectedSpeed);
+  } else {
+    throw InputError(scene.sourcePath +
+                     ": calibration.speed_of_sound: cannot be derived (no gravity and no initial "
+                     "velocity, so no speed is expected); set calibration.speed_of_sound or "
+                     "calibration.max_expected_speed");
+  }
+
+  out.stiffnessFromScene = c.stiffness.has_value();
+  out.stiffness =
+      c.stiffness ? *c.stiffness : stiffnessForSoundSpeed(f.eos, out.soundSpeed, f.restDensity);
+
+  // Artificial viscosity acts like ν = α h c0 / 10 in 3-D (Monaghan 2005).
+  out.kinematicViscosity = f.viscosityModel == ViscosityModel::Muller
+                               ? f.viscosity / f.restDensity
+                               : f.viscosity * out.supportRadius * out.soundSpeed / 10.0;
+
+  const TimeDesc& t = scene.time;
+  out.initialDt = t.fixedDt ? *t.fixedDt
+                            : std::min({cflTimeStep(t.cfl, out.supportRadius, out.soundSpeed, 0.0),
+                                        viscousTimeStep(t.viscousFactor, out.supportRadius,
+                                                        out.kinematicViscosity),
+                                        t.maxDt});
+  return out;
+}
+
+fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& c) {
+  const FluidDesc& f = scene.fluid;
+  fluid::FluidParameters p;
+  p.kernel = f.kernel;
+  p.eos = f.eos;
+  p.pressureForm = f.pressureForm;
+  p.viscosityModel = f.viscosityModel;
+  p.clampNegativePressure = f.clampNegativePressure;
+  p.h = static_cast<float>(c.supportRadius);
+  p.mass = static_cast<float>(c.mass);
+  p.restDensity = static_cast<float>(f.restDensity);
+  p.stiffness = static_cast<float>(c.stiffness);
+  p.soundSpeed = static_cast<float>(c.soundSpeed);
+  p.viscosity = static_cast<float>(f.viscosity);
+  p.wallFriction = static_cast<float>(f.wallFriction);
+  p.surfaceTension = static_cast<float>(f.surfaceTension);
+  p.surfaceThreshold = static_cast<float>(f.surfaceThreshold);
+  p.gravity = Vec3{static_cast<float>(scene.gravity[0]), static_cast<float>(scene.gravity[1]),
+                   static_cast<float>(scene.gravity[2])};
+  return p;
+}
+
+fluid::DomainParameters domainParameters(const Scene& scene) {
+  const DomainDesc& d = scene.domain;
+  auto v = [](const Vec3d& a) {
+    return Vec3{static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2])};
+  };
+  return fluid::DomainParameters{v(d.box.min), v(d.box.max), d.outside == OutsidePolicy::Clamp,
+                                 d.dampedBox, static_cast<float>(d.damping)};
+}
+
+}  // namespace sph::sim

@@ -1,0 +1,20 @@
+// Seed 1 §8.1, solved: every parameter derived from the scene's geometry and material.
+#pragma once
+
+#include "fluid/parameters.hpp"
+#include "sph/simulation.hpp"
+
+namespace sph::sim {
+
+// Mass so that a particle inside the initial lattice has exactly the rest density; speed of
+// sound ten times the largest expected speed; stiffness from it; the first time step.
+// Throws InputError (naming the scene file and key) when a value cannot be derived.
+Calibration calibrate(const Scene& scene);
+
+fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& calibration);
+fluid::DomainParameters domainParameters(const Scene& scene);
+
+// Σ_j W(x_i - x_j) over an infinite cubic lattice of the given spacing, self included.
+double latticeKernelSum(KernelKind kernel, double supportRadius, double spacing);
+
+}  // namespace sph::sim

@@ -1,0 +1,67 @@
+#include "sim/sampling.hpp"
+
+#include <cmath>
+
+namespace sph::sim {
+
+namespace {
+
+int cellsAlong(double extent, double spacing) {
+  return static_cast<int>(std::lround(extent / spacing));
+}
+
+}  // namespace
+
+std::vector<Vec3> sampleBlock(const AxisBox& box, double spacing) {
+  const int nx = cellsAlong(box.max[0] - box.min[0], spacing);
+  const int ny = cellsAlong(box.max[1] - box.min[1], spacing);
+  const int nz = cellsAlong(box.max[2] - box.min[2], spacing);
+  std::vector<Vec3> points;
+  if (nx <= 0 || ny <= 0 || nz <= 0) return points;
+  points.reserve(static_cast<std::size_t>(nx) * ny * nz);
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        points.push_back(Vec3{static_cast<float>(box.min[0] + (i + 0.5) * spacing),
+                              static_cast<float>(box.min[1] + (j + 0.5) * spacing),
+                              static_cast<float>(box.min[2] + (k + 0.5) * spacing)});
+  return points;
+}
+
+std::vector<Vec3> sampleTank(const WallTank& tank, double spacing, const Vec3d& gravity) {
+  const int upAxis = upAxisOf(gravity);
+  const bool upIsPositive = gravity[upAxis] <= 0.0;
+  const int layers = tank.layers;
+  int n[3];
+  for (int a = 0; a < 3; ++a) n[a] = cellsAlong(tank.box.max[a] - tank.box.min[a], spacing);
+  std::vector<Vec3> points;
+  for (int k = -layers; k < n[2] + layers; ++k)
+    for (int j = -layers; j < n[1] + layers; ++j)
+      for (int i = -layers; i < n[0] + layers; ++i) {
+        const int index[3] = {i, j, k};
+        bool inside = true;
+        for (int a = 0; a < 3; ++a) inside = inside && index[a] >= 0 && index[a] < n[a];
+        if (inside) continue;
+        // No lid: nothing beyond the rim on the side gravity points away from.
+        if (!tank.closed && (upIsPositive ? index[upAxis] >= n[upAxis] : index[upAxis] < 0))
+          continue;
+        points.push_back(Vec3{static_cast<float>(tank.box.min[0] + (i + 0.5) * spacing),
+                              static_cast<float>(tank.box.min[1] + (j + 0.5) * spacing),
+                              static_cast<float>(tank.box.min[2] + (k + 0.5) * spacing)});
+      }
+  return points;
+}
+
+int upAxisOf(const Vec3d& gravity) {
+  int axis = 1;
+  double largest = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    if (std::abs(gravity[a]) > largest) {
+      largest = std::abs(gravity[a]);
+      axis = a;
+    }
+  }
+  return axis;
+}
+
+}  // namespace sph::sim

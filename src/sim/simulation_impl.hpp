@@ -1,0 +1,138 @@
+// The state behind sph::Simulation, shared by the files that implement it.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "backend/cpu_parallel.hpp"
+#include "fluid/stages.hpp"
+#include "sim/calibration.hpp"
+#include "sim/sampling.hpp"
+#include "sph/core/time_step.hpp"
+#include "sph/error.hpp"
+#include "sph/simulation.hpp"
+
+namespace sph {
+
+namespace detail {
+
+template <class Stage>
+inline double timedMs(Stage&& stage) {
+  const auto start = std::chrono::steady_clock::now();
+  stage();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// The grid covers the domain and every wall particle, so no index ever leaves it.
+inline GridSpec gridCovering(const fluid::DomainParameters& domain, const std::vector<Vec3>& walls,
+                      float cellSize) {
+  Vec3 lo = domain.min, hi = domain.max;
+  for (const Vec3& p : walls) {
+    lo = Vec3{std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = Vec3{std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  return makeGrid(lo, hi, cellSize);
+}
+
+}  // namespace detail
+
+struct Simulation::Impl {
+  Scene scene;
+  Calibration calibration;
+  fluid::FluidParameters params;
+  fluid::DomainParameters domain;
+  fluid::FluidParticles fluid;
+  fluid::BoundaryParticles boundary;
+  fluid::Grid grid;
+  StepProfile profile;
+  double time = 0.0;
+  double dt = 0.0;
+  std::uint64_t steps = 0;
+  std::uint64_t removed = 0;
+  std::uint64_t initialFluid = 0;
+
+  explicit Impl(const Scene& s) : scene(s) {
+    calibration = sim::calibrate(scene);
+    params = sim::fluidParameters(scene, calibration);
+    domain = sim::domainParameters(scene);
+    dt = calibration.initialDt;
+
+    std::vector<Vec3> fluidPoints, fluidVelocities;
+    for (const auto& block : scene.fluid.blocks) {
+      const auto points = sim::sampleBlock(block.box, scene.fluid.spacing);
+      const Vec3 v{float(block.velocity[0]), float(block.velocity[1]), float(block.velocity[2])};
+      fluidPoints.insert(fluidPoints.end(), points.begin(), points.end());
+      fluidVelocities.insert(fluidVelocities.end(), points.size(), v);
+    }
+    std::vector<Vec3> wallPoints;
+    for (const auto& tank : scene.walls) {
+      const auto points = sim::sampleTank(tank, scene.fluid.spacing, scene.gravity);
+      wallPoints.insert(wallPoints.end(), points.begin(), points.end());
+    }
+    grid.spec = detail::gridCovering(domain, wallPoints, params.h);
+
+    const std::size_t n = fluidPoints.size();
+    initialFluid = n;
+    fluid.count = n;
+    for (auto* b : {&fluid.position, &fluid.velocity, &fluid.acceleration, &fluid.scratch4})
+      b->resize(n);
+    for (auto* b : {&fluid.id, &fluid.cell, &fluid.order, &fluid.scratchId}) b->resize(n);
+    fluid.density.resize(n);
+    fluid.pressure.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      fluid.position[i] = makeVec4(fluidPoints[i]);
+      fluid.velocity[i] = makeVec4(fluidVelocities[i]);
+      fluid.acceleration[i] = Vec4{0, 0, 0, 0};
+      fluid.id[i] = static_cast<std::uint32_t>(i);
+    }
+
+    boundary.count = wallPoints.size();
+    boundary.position.resize(boundary.count);
+    boundary.id.resize(boundary.count);
+    for (std::size_t b = 0; b < boundary.count; ++b) {
+      boundary.position[b] = makeVec4(wallPoints[b]);
+      boundary.id[b] = static_cast<std::uint32_t>(n + b);
+    }
+    fluid::prepareBoundary(boundary, grid.spec, params);
+
+    calibration.fluidParticles = n;
+    calibration.boundaryParticles = boundary.count;
+    // Density and pressure of the initial state, so stats and frame 0 are meaningful.
+    removed += fluid::buildGrid(fluid, grid, domain);
+    fluid::computeDensityAndPressure(fluid, grid, boundary, params);
+  }
+
+  double chooseTimeStep(double until) {
+    const fluid::StepMeasures m = fluid::measureStep(fluid, params.restDensity);
+    const float bound = static_cast<float>(scene.failure.maxDensityError);
+    if (!m.finite || m.maxDensityError > bound) fail(bound);
+    const TimeDesc& t = scene.time;
+    double next = t.fixedDt ? *t.fixedDt
+                            : std::min({cflTimeStep(t.cfl, params.h, params.soundSpeed, m.maxSpeed),
+                                        forceTimeStep(t.forceFactor, params.h, m.maxAcceleration),
+                                        viscousTimeStep(t.viscousFactor, params.h,
+                                                        calibration.kinematicViscosity),
+                                        t.maxDt});
+    const double remaining = until - time;
+    // Land exactly on `until` rather than leave a sliver of a step for later.
+    if (next >= remaining) next = remaining;
+    else if (next > 0.5 * remaining) next = 0.5 * remaining;
+    return next;
+  }
+
+  [[noreturn]] void fail(float bound) {
+    const fluid::BadParticle bad = fluid::findBadParticle(fluid, params.restDensity, bound);
+    std::ostringstream message;
+    message << "simulation failed at step " << steps << " (t = " << time << " s): particle "
+            << bad.id << ": " << bad.quantity << " = " << bad.value;
+    if (std::string(bad.quantity).find("error") != std::string::npos)
+      message << " exceeds failure.max_density_error = " << bound;
+    throw SimulationFailure(message.str(), steps, bad.id, bad.quantity);
+  }
+};
+
+}  // namespace sph

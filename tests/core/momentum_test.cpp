@@ -1,0 +1,67 @@
+#include "sph/core/momentum.hpp"
+
+#include <gtest/gtest.h>
+
+#include "sph/core/kernels.hpp"
+
+namespace sph {
+namespace {
+
+const auto kKernels = MullerKernels<float>::make(0.02);
+const Vec3 kXi{0.001f, 0.002f, 0.0f}, kXj{0.009f, -0.003f, 0.004f};
+const Vec3 kVi{0.3f, -0.1f, 0.2f}, kVj{-0.2f, 0.05f, 0.1f};
+
+Vec3 gradW(Vec3 rij) { return rij * kKernels.gradFactor(length(rij)); }
+
+void expectOpposite(Vec3 a, Vec3 b) {
+  EXPECT_NEAR(a.x, -b.x, 1e-5f * std::abs(a.x) + 1e-9f);
+  EXPECT_NEAR(a.y, -b.y, 1e-5f * std::abs(a.y) + 1e-9f);
+  EXPECT_NEAR(a.z, -b.z, 1e-5f * std::abs(a.z) + 1e-9f);
+}
+
+// With equal masses, the acceleration i gets from j is minus what j gets from i.
+TEST(Momentum, PressureFormsAreAntisymmetric) {
+  const Vec3 rij = kXi - kXj;
+  const float pi = 300.0f, pj = 120.0f, rhoi = 1003.0f, rhoj = 1001.0f, m = 0.008f;
+  expectOpposite(pressureAccelerationSymmetric(m, pi, rhoi, pj, rhoj, gradW(rij)),
+                 pressureAccelerationSymmetric(m, pj, rhoj, pi, rhoi, gradW(-rij)));
+  expectOpposite(pressureAccelerationPaper(m, pi, rhoi, pj, rhoj, gradW(rij)),
+                 pressureAccelerationPaper(m, pj, rhoj, pi, rhoi, gradW(-rij)));
+}
+
+TEST(Momentum, PressureRepels) {
+  const Vec3 rij = kXi - kXj;
+  const Vec3 a = pressureAccelerationSymmetric(0.008f, 300.0f, 1000.0f, 300.0f, 1000.0f, gradW(rij));
+  EXPECT_GT(dot(a, rij), 0.0f);  // pushes i away from j
+}
+
+TEST(Momentum, ViscositiesAreAntisymmetricAndDamp) {
+  const Vec3 rij = kXi - kXj, vij = kVi - kVj;
+  const float r = length(rij);
+  const Vec3 m1 = mullerViscosityAcceleration(0.1f, 0.008f, 1000.0f, 1010.0f, vij,
+                                              kKernels.laplacian(r));
+  expectOpposite(m1, mullerViscosityAcceleration(0.1f, 0.008f, 1010.0f, 1000.0f, -vij,
+                                                 kKernels.laplacian(r)));
+  EXPECT_LT(dot(m1, vij), 0.0f);  // reduces the relative velocity
+
+  const Vec3 a1 = artificialViscosityAcceleration(0.1f, 20.0f, 0.02f, 0.008f, 1000.0f, 1010.0f,
+                                                  vij, rij, r * r, gradW(rij));
+  const Vec3 a2 = artificialViscosityAcceleration(0.1f, 20.0f, 0.02f, 0.008f, 1010.0f, 1000.0f,
+                                                  -vij, -rij, r * r, gradW(-rij));
+  ASSERT_LT(dot(vij, rij), 0.0f);  // the pair approaches
+  expectOpposite(a1, a2);
+  EXPECT_LT(dot(a1, vij), 0.0f);
+  // Receding pairs feel nothing.
+  const Vec3 none = artificialViscosityAcceleration(0.1f, 20.0f, 0.02f, 0.008f, 1000.0f, 1000.0f,
+                                                    -vij, rij, r * r, gradW(rij));
+  EXPECT_EQ(length(none), 0.0f);
+}
+
+TEST(Momentum, BoundaryPressurePushesAwayFromWall) {
+  const Vec3 rib{0.0f, 0.008f, 0.0f};  // fluid above the wall particle
+  const Vec3 a = boundaryPressureAcceleration(0.008f, 500.0f, 1000.0f, gradW(rib));
+  EXPECT_GT(a.y, 0.0f);
+}
+
+}  // namespace
+}  // namespace sph

@@ -1,0 +1,104 @@
+#include "io/pvd_series.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sph::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+class PvdSeriesTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("sph_pvd_" + std::to_string(::getpid()) + "_" +
+            testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+std::string readAll(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// (timestep, file) of every DataSet, in document order.
+std::vector<std::pair<double, std::string>> dataSets(const std::string& pvd) {
+  std::vector<std::pair<double, std::string>> sets;
+  const std::regex dataSet("<DataSet timestep=\"([^\"]*)\"[^>]* file=\"([^\"]*)\"/>");
+  for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), dataSet);
+       it != std::sregex_iterator(); ++it) {
+    sets.emplace_back(std::stod((*it)[1]), (*it)[2]);
+  }
+  return sets;
+}
+
+bool isCompleteCollection(const std::string& pvd) {
+  const std::string tail = "  </Collection>\n</VTKFile>\n";
+  return pvd.rfind("<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\"", 0) == 0 &&
+         pvd.find("<Collection>") != std::string::npos && pvd.size() >= tail.size() &&
+         pvd.compare(pvd.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+TEST_F(PvdSeriesTest, ListsEveryFrameInOrderAfterEachAdd) {
+  const fs::path pvd = dir_ / "run.pvd";
+  PvdSeries series(pvd);
+  EXPECT_FALSE(fs::exists(pvd));
+
+  series.add(0.0, "frames/frame_00000.vtp");
+  std::string text = readAll(pvd);
+  EXPECT_TRUE(isCompleteCollection(text)) << text;
+  EXPECT_EQ(dataSets(text),
+            (std::vector<std::pair<double, std::string>>{{0.0, "frames/frame_00000.vtp"}}));
+
+  series.add(1.0 / 30.0, "frames/frame_00001.vtp");
+  series.add(0.1, "frames/frame_00002.vtp");
+  text = readAll(pvd);
+  EXPECT_TRUE(isCompleteCollection(text)) << text;
+  EXPECT_EQ(dataSets(text), (std::vector<std::pair<double, std::string>>{
+                                {0.0, "frames/frame_00000.vtp"},
+                                {1.0 / 30.0, "frames/frame_00001.vtp"},
+                                {0.1, "frames/frame_00002.vtp"}}));
+  EXPECT_NE(text.find("timestep=\"0.1\""), std::string::npos) << "times should read naturally";
+  EXPECT_FALSE(fs::exists(dir_ / "run.pvd.tmp"));
+}
+
+TEST_F(PvdSeriesTest, FileNamesAreEscapedForXml) {
+  const fs::path pvd = dir_ / "run.pvd";
+  PvdSeries series(pvd);
+  series.add(0.5, "a&b\"c.vtp");
+  EXPECT_EQ(dataSets(readAll(pvd)),
+            (std::vector<std::pair<double, std::string>>{{0.5, "a&amp;b&quot;c.vtp"}}));
+}
+
+TEST_F(PvdSeriesTest, MissingDirectoryThrowsNamingThePath) {
+  const fs::path pvd = dir_ / "no_such_dir" / "run.pvd";
+  PvdSeries series(pvd);
+  try {
+    series.add(0.0, "frame.vtp");
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find(pvd.string()), std::string::npos) << error.what();
+  }
+  // The failed frame is forgotten, so a later successful add lists it once.
+  fs::create_directories(pvd.parent_path());
+  series.add(0.0, "frame.vtp");
+  EXPECT_EQ(dataSets(readAll(pvd)).size(), 1u);
+}
+
+}  // namespace
+}  // namespace sph::io

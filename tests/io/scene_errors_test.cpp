@@ -1,0 +1,191 @@
+// Tests of the messages src/io/scene_loader gives for bad scenes: each names the file, the
+// dotted key and what was expected.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "io/scene_loader.hpp"
+#include "scene_test_support.hpp"
+
+namespace sph::io {
+namespace {
+
+using nlohmann::json;
+using scene_test::completeSceneJson;
+using scene_test::minimalSceneJson;
+using scene_test::parseError;
+
+// `document` with the value at a JSON pointer (`/fluid/spacing`) replaced.
+json with(json document, const std::string& pointer, json value) {
+  document[json::json_pointer(pointer)] = std::move(value);
+  return document;
+}
+
+json without(json document, const std::string& pointer) {
+  const json::json_pointer p(pointer);
+  document[p.parent_pointer()].erase(p.back());
+  return document;
+}
+
+void expectContains(const std::string& message, const std::vector<std::string>& parts) {
+  for (const std::string& part : parts) {
+    EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+  }
+}
+
+TEST(SceneErrors, NegativeSpacing) {
+  EXPECT_EQ(parseError(with(minimalSceneJson(), "/fluid/spacing", -0.01)),
+            "scenes/x.json: fluid.spacing: expected a positive number, got -0.01");
+}
+
+TEST(SceneErrors, UnknownKernelListsTheChoices) {
+  EXPECT_EQ(parseError(with(minimalSceneJson(), "/fluid/kernel", "poly6")),
+            "scenes/x.json: fluid.kernel: expected one of \"muller\", \"cubic_spline\", "
+            "\"wendland_c2\", got \"poly6\"");
+}
+
+TEST(SceneErrors, VectorThatIsNotThreeNumbers) {
+  EXPECT_EQ(parseError(with(minimalSceneJson(), "/domain/min", "abc")),
+            "scenes/x.json: domain.min: expected an array of 3 numbers, got \"abc\"");
+  expectContains(parseError(with(minimalSceneJson(), "/gravity", {0, -9.81})),
+                 {"scenes/x.json", "gravity: expected an array of 3 numbers, got [0,-9.81]"});
+  expectContains(parseError(with(minimalSceneJson(), "/fluid/blocks/0/velocity", {1, "2", 3})),
+                 {"fluid.blocks[0].velocity: expected an array of 3 numbers"});
+}
+
+TEST(SceneErrors, MissingRequiredKeys) {
+  EXPECT_EQ(parseError(without(minimalSceneJson(), "/domain/max")),
+            "scenes/x.json: domain.max: required key is missing");
+  EXPECT_EQ(parseError(without(minimalSceneJson(), "/domain")),
+            "scenes/x.json: domain: required key is missing");
+  EXPECT_EQ(parseError(without(minimalSceneJson(), "/fluid/blocks")),
+            "scenes/x.json: fluid.blocks: required key is missing");
+  EXPECT_EQ(parseError(without(minimalSceneJson(), "/fluid/blocks/0/min")),
+            "scenes/x.json: fluid.blocks[0].min: required key is missing");
+  const json wall = json::parse(R"({"min": [0, 0, 0]})");
+  EXPECT_EQ(parseError(with(minimalSceneJson(), "/walls", {wall})),
+            "scenes/x.json: walls[0].max: required key is missing");
+}
+
+TEST(SceneErrors, NoFluidBlocks) {
+  EXPECT_EQ(parseError(with(minimalSceneJson(), "/fluid/blocks", json::array())),
+            "scenes/x.json: fluid.blocks: expected a non-empty array of objects, got []");
+  expectContains(parseError(with(minimalSceneJson(), "/fluid/blocks/0", 3)),
+                 {"scenes/x.json: fluid.blocks[0]: expected an object, got 3"});
+  expectContains(parseError(with(minimalSceneJson(), "/walls", json::object())),
+                 {"scenes/x.json: walls: expected an array of objects, got {}"});
+}
+
+TEST(SceneErrors, SectionThatIsNotAnObject) {
+  EXPECT_EQ(parseError(with(minimalSceneJson(), "/time", 5)),
+            "scenes/x.json: time: expected an object, got 5");
+  EXPECT_EQ(parseError(json::array({1, 2})),
+            "scenes/x.json: expected a JSON object at the top level, got [1,2]");
+}
+
+// Each key with a bad value: the message gives the dotted key and the expectation.
+TEST(SceneErrors, ValuesOutOfRange) {
+  struct Case {
+    const char* pointer;
+    json value;
+    const char* expected;  // after "scenes/x.json: "
+  };
+  const Case cases[] = {
+      {"/name", 3, "name: expected a string, got 3"},
+      {"/domain/outside", "wrap", "domain.outside: expected one of \"remove\", \"clamp\""},
+      {"/domain/damped_box", "yes", "domain.damped_box: expected true or false, got \"yes\""},
+      {"/domain/damping", 1.5, "domain.damping: expected a number in [0, 1], got 1.5"},
+      {"/fluid/rest_density", 0, "fluid.rest_density: expected a positive number, got 0"},
+      {"/fluid/support_ratio", 5, "fluid.support_ratio: expected a number in [1, 4], got 5"},
+      {"/fluid/support_ratio", 0.5, "fluid.support_ratio: expected a number in [1, 4], got 0.5"},
+      {"/fluid/eos", "ideal_gas", "fluid.eos: expected one of \"linear\", \"ratio\", \"tait\""},
+      {"/fluid/clamp_negative_pressure", 1, "fluid.clamp_negative_pressure: expected true or"},
+      {"/fluid/pressure_form", "x", "fluid.pressure_form: expected one of \"paper\", \"symm"},
+      {"/fluid/viscosity/model", "xsph", "fluid.viscosity.model: expected one of \"muller\""},
+      {"/fluid/viscosity/value", -1, "fluid.viscosity.value: expected a non-negative number"},
+      {"/fluid/viscosity/wall_friction", "a lot", "fluid.viscosity.wall_friction: expected a"},
+      {"/fluid/surface_tension/coefficient", -0.07, "fluid.surface_tension.coefficient: exp"},
+      {"/fluid/surface_tension/threshold", 0, "fluid.surface_tension.threshold: expected a pos"},
+      {"/fluid/spacing", nullptr, "fluid.spacing: expected a positive number, got null"},
+      {"/walls/0/type", "box", "walls[0].type: expected one of \"tank\", got \"box\""},
+      {"/walls/0/layers", 5, "walls[0].layers: expected an integer in [1, 4], got 5"},
+      {"/walls/0/layers", 2.5, "walls[0].layers: expected an integer in [1, 4], got 2.5"},
+      {"/walls/0/closed", "no", "walls[0].closed: expected true or false"},
+      {"/calibration/mass", -1, "calibration.mass: expected a positive number or null, got -1"},
+      {"/calibration/max_expected_speed", 0, "calibration.max_expected_speed: expected a pos"},
+      {"/calibration/speed_of_sound", "fast", "calibration.speed_of_sound: expected a positive"},
+      {"/calibration/stiffness", false, "calibration.stiffness: expected a positive number or"},
+      {"/time/duration", -2, "time.duration: expected a positive number, got -2"},
+      {"/time/cfl", 0, "time.cfl: expected a number in (0, 1], got 0"},
+      {"/time/force_factor", 1.01, "time.force_factor: expected a number in (0, 1], got 1.01"},
+      {"/time/viscous_factor", 2, "time.viscous_factor: expected a number in (0, 1]"},
+      {"/time/max_dt", 0, "time.max_dt: expected a positive number, got 0"},
+      {"/time/fixed_dt", -1e-4, "time.fixed_dt: expected a positive number or null"},
+      {"/output/fps", 0, "output.fps: expected a positive number, got 0"},
+      {"/output/format", "vtk", "output.format: expected one of \"vtp\", \"ply\", \"csv\", "
+                                "\"none\", got \"vtk\""},
+      {"/failure/max_density_error", -0.1, "failure.max_density_error: expected a positive"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.pointer);
+    const std::string message = parseError(with(completeSceneJson(), c.pointer, c.value));
+    EXPECT_EQ(message.rfind(std::string("scenes/x.json: ") + c.expected, 0), 0u) << message;
+  }
+}
+
+TEST(SceneErrors, HugeNumbersAreNotFinite) {
+  const json document = json::parse(R"({
+    "domain": {"min": [0, 0, 0], "max": [1, 1, 1e999]},
+    "fluid": {"blocks": [{"min": [0, 0, 0], "max": [0.5, 0.5, 0.5]}]}})");
+  expectContains(parseError(document),
+                 {"scenes/x.json: domain.max: expected an array of 3 numbers, got [1,1,"});
+}
+
+TEST(SceneErrors, UnknownKeySuggestsTheNearestKey) {
+  json document = minimalSceneJson();
+  document["fluid"]["viscosty"] = {{"value", 0.1}};
+  EXPECT_EQ(parseError(document),
+            "scenes/x.json: unknown key fluid.viscosty (did you mean fluid.viscosity?)");
+
+  EXPECT_EQ(parseError(with(minimalSceneJson(), "/domain/dampd_box", true)),
+            "scenes/x.json: unknown key domain.dampd_box (did you mean domain.damped_box?)");
+  EXPECT_EQ(parseError(with(minimalSceneJson(), "/gravty", {0, -1, 0})),
+            "scenes/x.json: unknown key gravty (did you mean gravity?)");
+  EXPECT_EQ(parseError(with(minimalSceneJson(), "/fluid/blocks/0/velocty", {0, 0, 0})),
+            "scenes/x.json: unknown key fluid.blocks[0].velocty (did you mean "
+            "fluid.blocks[0].velocity?)");
+  EXPECT_EQ(parseError(with(minimalSceneJson(), "/time/fixed_td", 0.1)),
+            "scenes/x.json: unknown key time.fixed_td (did you mean time.fixed_dt?)");
+}
+
+TEST(SceneErrors, UnknownKeyFarFromAnyListsTheKnownKeys) {
+  const std::string message = parseError(with(minimalSceneJson(), "/output/colour", "red"));
+  EXPECT_EQ(message,
+            "scenes/x.json: unknown key output.colour (keys of output are: fps, format)");
+  const std::string top = parseError(with(minimalSceneJson(), "/solver", "pcisph"));
+  expectContains(top, {"unknown key solver (top-level keys are: name, description, domain"});
+  EXPECT_EQ(top.find("did you mean"), std::string::npos) << top;
+}
+
+TEST(SceneErrors, BoxesNeedMinBelowMax) {
+  EXPECT_EQ(parseError(with(minimalSceneJson(), "/domain/max", {1, 0, 1})),
+            "scenes/x.json: domain.max: expected a point above domain.min [0, 0, 0] on every "
+            "axis, got [1, 0, 1]");
+  expectContains(parseError(with(completeSceneJson(), "/fluid/blocks/1/min", {1.2, 0, 0})),
+                 {"scenes/x.json: fluid.blocks[1].max: expected a point above fluid.blocks[1].min"});
+  expectContains(parseError(with(completeSceneJson(), "/walls/0/max", {1.4, 1.0, -0.2})),
+                 {"scenes/x.json: walls[0].max: expected a point above walls[0].min"});
+}
+
+TEST(SceneErrors, BoxesMustLieInsideTheDomain) {
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/fluid/blocks/1/max", {1.2, 0.1, 0.4})),
+            "scenes/x.json: fluid.blocks[1].max: expected a point inside the domain box "
+            "[-0.1, 0, -0.2] to [1.5, 1.2, 0.3], got [1.2, 0.1, 0.4]");
+  expectContains(parseError(with(completeSceneJson(), "/walls/0/min", {-0.5, 0, 0})),
+                 {"scenes/x.json: walls[0].min: expected a point inside the domain box"});
+}
+
+}  // namespace
+}  // namespace sph::io

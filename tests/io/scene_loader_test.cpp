@@ -1,0 +1,250 @@
+// Tests of src/io/scene_loader: valid scenes, defaults, files, and the JSON round trip.
+// Errors are in scene_errors_test.cpp, overrides in scene_overrides_test.cpp.
+#include "io/scene_loader.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "io/scene_schema.hpp"
+#include "scene_test_support.hpp"
+
+namespace sph::io {
+namespace {
+
+using nlohmann::json;
+using scene_test::completeSceneJson;
+using scene_test::expectScenesEqual;
+using scene_test::kSource;
+using scene_test::minimalSceneJson;
+
+TEST(SceneLoader, CompleteSceneSetsEveryField) {
+  const Scene scene = parseScene(completeSceneJson(), kSource);
+
+  EXPECT_EQ(scene.sourcePath, kSource);
+  EXPECT_EQ(scene.name, "dam_break");
+  EXPECT_EQ(scene.description, "A column of water collapses.");
+  EXPECT_EQ(scene.domain.box.min, (Vec3d{-0.1, 0, -0.2}));
+  EXPECT_EQ(scene.domain.box.max, (Vec3d{1.5, 1.2, 0.3}));
+  EXPECT_EQ(scene.domain.outside, OutsidePolicy::Clamp);
+  EXPECT_TRUE(scene.domain.dampedBox);
+  EXPECT_EQ(scene.domain.damping, 0.3);
+  EXPECT_EQ(scene.gravity, (Vec3d{0, -3.7, 0.5}));
+
+  const FluidDesc& fluid = scene.fluid;
+  EXPECT_EQ(fluid.restDensity, 998.2);
+  EXPECT_EQ(fluid.spacing, 0.02);
+  EXPECT_EQ(fluid.supportRatio, 2.5);
+  EXPECT_EQ(fluid.kernel, KernelKind::WendlandC2);
+  EXPECT_EQ(fluid.eos, EquationOfState::Tait);
+  EXPECT_FALSE(fluid.clampNegativePressure);
+  EXPECT_EQ(fluid.pressureForm, PressureForm::Paper);
+  EXPECT_EQ(fluid.viscosityModel, ViscosityModel::Muller);
+  EXPECT_EQ(fluid.viscosity, 0.05);
+  EXPECT_EQ(fluid.wallFriction, 0.4);
+  EXPECT_EQ(fluid.surfaceTension, 0.0728);
+  EXPECT_EQ(fluid.surfaceThreshold, 6.5);
+  ASSERT_EQ(fluid.blocks.size(), 2u);
+  EXPECT_EQ(fluid.blocks[0].box.min, (Vec3d{0, 0, -0.1}));
+  EXPECT_EQ(fluid.blocks[0].box.max, (Vec3d{0.4, 0.6, 0.2}));
+  EXPECT_EQ(fluid.blocks[0].velocity, (Vec3d{1, 0, -0.25}));
+  EXPECT_EQ(fluid.blocks[1].box.min, (Vec3d{1, 0, 0}));
+  EXPECT_EQ(fluid.blocks[1].box.max, (Vec3d{1.2, 0.1, 0.1}));
+  EXPECT_EQ(fluid.blocks[1].velocity, (Vec3d{0, 0, 0}));
+
+  ASSERT_EQ(scene.walls.size(), 1u);
+  EXPECT_EQ(scene.walls[0].box.min, (Vec3d{0, 0, -0.15}));
+  EXPECT_EQ(scene.walls[0].box.max, (Vec3d{1.4, 1.0, 0.25}));
+  EXPECT_EQ(scene.walls[0].layers, 3);
+  EXPECT_TRUE(scene.walls[0].closed);
+
+  EXPECT_EQ(scene.calibration.mass, 0.008);
+  EXPECT_EQ(scene.calibration.maxExpectedSpeed, 3.5);
+  EXPECT_EQ(scene.calibration.speedOfSound, 35.0);
+  EXPECT_EQ(scene.calibration.stiffness, 1.75e5);
+
+  EXPECT_EQ(scene.time.duration, 2.5);
+  EXPECT_EQ(scene.time.cfl, 0.3);
+  EXPECT_EQ(scene.time.forceFactor, 0.2);
+  EXPECT_EQ(scene.time.viscousFactor, 0.1);
+  EXPECT_EQ(scene.time.maxDt, 0.005);
+  EXPECT_EQ(scene.time.fixedDt, 0.0001);
+
+  EXPECT_EQ(scene.output.fps, 60.0);
+  EXPECT_EQ(scene.output.format, FrameFormat::Ply);
+  EXPECT_EQ(scene.failure.maxDensityError, 0.2);
+}
+
+TEST(SceneLoader, AbsentKeysTakeTheDefaultsOfSceneHpp) {
+  const Scene scene = parseScene(minimalSceneJson(), kSource);
+
+  // Everything but the required keys, the source and the block is a default.
+  Scene expected;
+  expected.sourcePath = kSource;
+  expected.domain.box = {{0, 0, 0}, {1, 1, 1}};
+  FluidBlock block;
+  block.box = {{0, 0, 0}, {0.5, 0.5, 0.5}};
+  expected.fluid.blocks = {block};
+  expectScenesEqual(scene, expected);
+  EXPECT_EQ(scene.sourcePath, kSource);
+
+  // A few defaults spelled out, so that a change to scene.hpp is seen here.
+  EXPECT_EQ(scene.fluid.spacing, 0.01);
+  EXPECT_EQ(scene.fluid.kernel, KernelKind::Muller);
+  EXPECT_EQ(scene.gravity, (Vec3d{0, -9.81, 0}));
+  EXPECT_TRUE(scene.walls.empty());
+  EXPECT_FALSE(scene.calibration.speedOfSound.has_value());
+  EXPECT_FALSE(scene.time.fixedDt.has_value());
+  EXPECT_EQ(scene.output.format, FrameFormat::Vtp);
+}
+
+TEST(SceneLoader, NullOptionalValuesAreUnset) {
+  json document = completeSceneJson();
+  document["calibration"]["mass"] = nullptr;
+  document["time"]["fixed_dt"] = nullptr;
+  const Scene scene = parseScene(document, kSource);
+  EXPECT_FALSE(scene.calibration.mass.has_value());
+  EXPECT_FALSE(scene.time.fixedDt.has_value());
+  EXPECT_EQ(scene.calibration.stiffness, 1.75e5);
+}
+
+TEST(SceneLoader, WallLayersWrittenAsWholeFloatAreAccepted) {
+  json document = completeSceneJson();
+  document["walls"][0]["layers"] = 4.0;
+  EXPECT_EQ(parseScene(document, kSource).walls[0].layers, 4);
+}
+
+TEST(SceneLoader, BoxesMayTouchTheDomainFaces) {
+  json document = minimalSceneJson();
+  document["fluid"]["blocks"][0]["max"] = {1, 1, 1};
+  document["walls"] = json::parse(R"([{"min": [0, 0, 0], "max": [1, 1, 1]}])");
+  EXPECT_NO_THROW(parseScene(document, kSource));
+}
+
+TEST(SceneJson, RoundTripsTheCompleteScene) {
+  const Scene original = parseScene(completeSceneJson(), kSource);
+  const json written = sceneToJson(original);
+  const Scene reread = parseScene(written, kSource);
+  expectScenesEqual(reread, original);
+  EXPECT_EQ(sceneToJson(reread), written);
+}
+
+TEST(SceneJson, RoundTripsDefaultsAndUnsetOptionals) {
+  const Scene original = parseScene(minimalSceneJson(), kSource);
+  const json written = sceneToJson(original);
+  EXPECT_TRUE(written["calibration"]["mass"].is_null());
+  EXPECT_TRUE(written["calibration"]["speed_of_sound"].is_null());
+  EXPECT_TRUE(written["time"]["fixed_dt"].is_null());
+  EXPECT_EQ(written["fluid"]["kernel"], "muller");
+  EXPECT_EQ(written["walls"], json::array());
+  expectScenesEqual(parseScene(written, kSource), original);
+}
+
+TEST(SceneJson, RoundTripsValuesThatNeedEveryDigit) {
+  Scene original = parseScene(minimalSceneJson(), kSource);
+  original.fluid.spacing = 0.1 + 0.2;  // 0.30000000000000004
+  original.time.duration = 1.0 / 3.0;
+  original.gravity = {1e-300, -9.80665, 2.5e12};
+  expectScenesEqual(parseScene(sceneToJson(original), kSource), original);
+}
+
+// Every key of the schema is written, in every object and every array element.
+void expectEveryKey(const json& value, const KeySchema& schema, const std::string& path) {
+  if (schema.shape == KeySchema::Shape::Object) {
+    ASSERT_TRUE(value.is_object()) << path;
+    for (const KeySchema& key : schema.children) {
+      ASSERT_TRUE(value.contains(key.name)) << joinKey(path, key.name) << " is not written";
+      expectEveryKey(value[key.name], key, joinKey(path, key.name));
+    }
+    EXPECT_EQ(value.size(), schema.children.size()) << path << " has keys outside the schema";
+  } else if (schema.shape == KeySchema::Shape::Array) {
+    ASSERT_TRUE(value.is_array()) << path;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      expectEveryKey(value[i], schema.element(), joinIndex(path, i));
+    }
+  }
+}
+
+TEST(SceneJson, WritesEveryKeyOfTheSchema) {
+  expectEveryKey(sceneToJson(parseScene(completeSceneJson(), kSource)), sceneSchema(), "");
+  expectEveryKey(sceneToJson(parseScene(minimalSceneJson(), kSource)), sceneSchema(), "");
+}
+
+class SceneFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::filesystem::temp_directory_path() /
+           ("sph_scene_loader_test_" + std::string(info->name()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::filesystem::path write(const std::string& name, const std::string& text) {
+    const std::filesystem::path file = dir_ / name;
+    std::ofstream(file) << text;
+    return file;
+  }
+
+  std::string loadError(const std::filesystem::path& file) {
+    try {
+      loadScene(file);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "loadScene accepted " << file;
+    return "";
+  }
+
+  std::filesystem::path dir_;
+};
+
+TEST_F(SceneFile, LoadsAFileAndAppliesOverrides) {
+  const auto file = write("dam.json", completeSceneJson().dump(2));
+  const Scene scene = loadScene(file, {"fluid.spacing=0.03"});
+  EXPECT_EQ(scene.sourcePath, file.string());
+  EXPECT_EQ(scene.name, "dam_break");
+  EXPECT_EQ(scene.fluid.spacing, 0.03);
+}
+
+TEST_F(SceneFile, MissingFileNamesThePath) {
+  const auto file = dir_ / "nothing.json";
+  const std::string message = loadError(file);
+  EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+  EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
+}
+
+TEST_F(SceneFile, DirectoryIsNotAScene) {
+  const std::string message = loadError(dir_);
+  EXPECT_NE(message.find(dir_.string()), std::string::npos) << message;
+  EXPECT_NE(message.find("directory"), std::string::npos) << message;
+}
+
+TEST_F(SceneFile, InvalidJsonGivesLineAndColumn) {
+  const auto file = write("broken.json", "{\n  \"name\": \"x\",\n  \"domain\": {,\n}\n");
+  const std::string message = loadError(file);
+  EXPECT_EQ(message.rfind(file.string() + ": invalid JSON: ", 0), 0u) << message;
+  EXPECT_NE(message.find("line 3, column 14"), std::string::npos) << message;
+  EXPECT_EQ(message.find("[json.exception"), std::string::npos) << message;
+}
+
+TEST_F(SceneFile, EmptyFileIsInvalidJson) {
+  const auto file = write("empty.json", "");
+  const std::string message = loadError(file);
+  EXPECT_NE(message.find(file.string() + ": invalid JSON"), std::string::npos) << message;
+}
+
+TEST_F(SceneFile, ValidationErrorsNameTheFile) {
+  json document = minimalSceneJson();
+  document["fluid"]["spacing"] = -0.01;
+  const auto file = write("bad.json", document.dump());
+  EXPECT_EQ(loadError(file),
+            file.string() + ": fluid.spacing: expected a positive number, got -0.01");
+}
+
+}  // namespace
+}  // namespace sph::io

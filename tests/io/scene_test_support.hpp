@@ -1,0 +1,121 @@
+// Scene documents and helpers shared by the scene loader tests.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "io/scene_loader.hpp"
+#include "sph/error.hpp"
+#include "sph/scene.hpp"
+
+namespace sph::io::scene_test {
+
+inline constexpr const char* kSource = "scenes/x.json";
+
+// The smallest valid scene: the two required keys.
+inline nlohmann::json minimalSceneJson() {
+  return nlohmann::json::parse(R"({
+    "domain": {"min": [0, 0, 0], "max": [1, 1, 1]},
+    "fluid": {"blocks": [{"min": [0, 0, 0], "max": [0.5, 0.5, 0.5]}]}
+  })");
+}
+
+// Every key, each set to a value other than its default.
+inline nlohmann::json completeSceneJson() {
+  return nlohmann::json::parse(R"({
+    "name": "dam_break",
+    "description": "A column of water collapses.",
+    "domain": {"min": [-0.1, 0, -0.2], "max": [1.5, 1.2, 0.3], "outside": "clamp",
+               "damped_box": true, "damping": 0.3},
+    "gravity": [0, -3.7, 0.5],
+    "fluid": {
+      "rest_density": 998.2, "spacing": 0.02, "support_ratio": 2.5,
+      "kernel": "wendland_c2", "eos": "tait", "clamp_negative_pressure": false,
+      "pressure_form": "paper",
+      "viscosity": {"model": "muller", "value": 0.05, "wall_friction": 0.4},
+      "surface_tension": {"coefficient": 0.0728, "threshold": 6.5},
+      "blocks": [
+        {"min": [0, 0, -0.1], "max": [0.4, 0.6, 0.2], "velocity": [1, 0, -0.25]},
+        {"min": [1, 0, 0], "max": [1.2, 0.1, 0.1]}
+      ]
+    },
+    "walls": [{"type": "tank", "min": [0, 0, -0.15], "max": [1.4, 1.0, 0.25], "layers": 3,
+               "closed": true}],
+    "calibration": {"mass": 0.008, "max_expected_speed": 3.5, "speed_of_sound": 35,
+                    "stiffness": 1.75e5},
+    "time": {"duration": 2.5, "cfl": 0.3, "force_factor": 0.2, "viscous_factor": 0.1,
+             "max_dt": 0.005, "fixed_dt": 0.0001},
+    "output": {"fps": 60, "format": "ply"},
+    "failure": {"max_density_error": 0.2}
+  })");
+}
+
+// The message parseScene throws for `document`, or a failure if it throws none.
+inline std::string parseError(const nlohmann::json& document,
+                              const std::vector<std::string>& overrides = {}) {
+  try {
+    parseScene(document, kSource, overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "parseScene accepted " << document.dump();
+  return "";
+}
+
+inline void expectBoxesEqual(const AxisBox& a, const AxisBox& b) {
+  EXPECT_EQ(a.min, b.min);
+  EXPECT_EQ(a.max, b.max);
+}
+
+inline void expectScenesEqual(const Scene& a, const Scene& b) {
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.description, b.description);
+  expectBoxesEqual(a.domain.box, b.domain.box);
+  EXPECT_EQ(a.domain.outside, b.domain.outside);
+  EXPECT_EQ(a.domain.dampedBox, b.domain.dampedBox);
+  EXPECT_EQ(a.domain.damping, b.domain.damping);
+  EXPECT_EQ(a.gravity, b.gravity);
+  const FluidDesc& fa = a.fluid;
+  const FluidDesc& fb = b.fluid;
+  EXPECT_EQ(fa.restDensity, fb.restDensity);
+  EXPECT_EQ(fa.spacing, fb.spacing);
+  EXPECT_EQ(fa.supportRatio, fb.supportRatio);
+  EXPECT_EQ(fa.kernel, fb.kernel);
+  EXPECT_EQ(fa.eos, fb.eos);
+  EXPECT_EQ(fa.clampNegativePressure, fb.clampNegativePressure);
+  EXPECT_EQ(fa.pressureForm, fb.pressureForm);
+  EXPECT_EQ(fa.viscosityModel, fb.viscosityModel);
+  EXPECT_EQ(fa.viscosity, fb.viscosity);
+  EXPECT_EQ(fa.wallFriction, fb.wallFriction);
+  EXPECT_EQ(fa.surfaceTension, fb.surfaceTension);
+  EXPECT_EQ(fa.surfaceThreshold, fb.surfaceThreshold);
+  ASSERT_EQ(fa.blocks.size(), fb.blocks.size());
+  for (std::size_t i = 0; i < fa.blocks.size(); ++i) {
+    expectBoxesEqual(fa.blocks[i].box, fb.blocks[i].box);
+    EXPECT_EQ(fa.blocks[i].velocity, fb.blocks[i].velocity);
+  }
+  ASSERT_EQ(a.walls.size(), b.walls.size());
+  for (std::size_t i = 0; i < a.walls.size(); ++i) {
+    expectBoxesEqual(a.walls[i].box, b.walls[i].box);
+    EXPECT_EQ(a.walls[i].layers, b.walls[i].layers);
+    EXPECT_EQ(a.walls[i].closed, b.walls[i].closed);
+  }
+  EXPECT_EQ(a.calibration.mass, b.calibration.mass);
+  EXPECT_EQ(a.calibration.maxExpectedSpeed, b.calibration.maxExpectedSpeed);
+  EXPECT_EQ(a.calibration.speedOfSound, b.calibration.speedOfSound);
+  EXPECT_EQ(a.calibration.stiffness, b.calibration.stiffness);
+  EXPECT_EQ(a.time.duration, b.time.duration);
+  EXPECT_EQ(a.time.cfl, b.time.cfl);
+  EXPECT_EQ(a.time.forceFactor, b.time.forceFactor);
+  EXPECT_EQ(a.time.viscousFactor, b.time.viscousFactor);
+  EXPECT_EQ(a.time.maxDt, b.time.maxDt);
+  EXPECT_EQ(a.time.fixedDt, b.time.fixedDt);
+  EXPECT_EQ(a.output.fps, b.output.fps);
+  EXPECT_EQ(a.output.format, b.output.format);
+  EXPECT_EQ(a.failure.maxDensityError, b.failure.maxDensityError);
+}
+
+}  // namespace sph::io::scene_test

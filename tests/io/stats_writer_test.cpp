@@ -1,0 +1,104 @@
+#include "io/stats_writer.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sph::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+class StatsWriterTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("sph_stats_" + std::to_string(::getpid()) + "_" +
+            testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+const char* const kHeader =
+    "time,steps,dt,fluid_count,boundary_count,kinetic_energy,mean_density,max_density_error,"
+    "max_speed,surface_count,leaked_count,removed_count,wall_ms_per_step";
+
+std::vector<std::string> readLines(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::istringstream in(line);
+  for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
+  return fields;
+}
+
+FrameStats makeStats(int row) {
+  FrameStats s;
+  s.time = 0.25 * row;
+  s.steps = 100u * static_cast<unsigned>(row) + 1;
+  s.dt = 1.5e-4;
+  s.fluidCount = 8000;
+  s.boundaryCount = 1234;
+  s.kineticEnergy = 0.5 + row;
+  s.meanDensity = 1000.125;
+  s.maxDensityError = 0.0125;
+  s.maxSpeed = 2.75;
+  s.surfaceCount = 300;
+  s.leakedCount = static_cast<std::uint64_t>(row);
+  s.removedCount = 12345678901234ull;
+  s.wallMsPerStep = 3.5;
+  return s;
+}
+
+TEST_F(StatsWriterTest, HeaderThenOneFlushedRowPerAppend) {
+  const fs::path file = dir_ / "stats.csv";
+  StatsWriter writer(file);
+  EXPECT_EQ(readLines(file), std::vector<std::string>{kHeader});
+
+  writer.append(makeStats(1));
+  writer.append(makeStats(2));
+  // Read while the writer is still open: rows must already be on disk.
+  const std::vector<std::string> lines = readLines(file);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0], kHeader);
+  EXPECT_EQ(lines[1], "0.25,101,0.00015,8000,1234,1.5,1000.125,0.0125,2.75,300,1,12345678901234,3.5");
+  const std::vector<std::string> fields = split(lines[2]);
+  ASSERT_EQ(fields.size(), 13u);
+  EXPECT_EQ(std::stod(fields[0]), 0.5);
+  EXPECT_EQ(std::stoull(fields[1]), 201u);
+  EXPECT_EQ(std::stod(fields[5]), 2.5);
+  EXPECT_EQ(std::stoull(fields[10]), 2u);
+}
+
+TEST_F(StatsWriterTest, NewWriterStartsAFreshFile) {
+  const fs::path file = dir_ / "stats.csv";
+  StatsWriter(file).append(makeStats(1));
+  StatsWriter again(file);
+  EXPECT_EQ(readLines(file), std::vector<std::string>{kHeader});
+}
+
+TEST_F(StatsWriterTest, MissingDirectoryThrowsNamingThePath) {
+  const fs::path file = dir_ / "no_such_dir" / "stats.csv";
+  try {
+    StatsWriter writer(file);
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find(file.string()), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace sph::io
