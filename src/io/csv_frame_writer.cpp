@@ -14,8 +14,8 @@ void writeCsvFrame(const ParticleFrame& frame, std::ostream& out) {
     const float* v = &frame.velocity[3 * i];
     const int len = std::snprintf(
         row, sizeof row, "%" PRIu32 ",%u,%" PRId32 ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
-        frame.id[i], static_cast<unsigned>(frame.kind[i]), frame.object[i], p[0], p[1], p[2],
-        v[0], v[1], v[2], frame.density[i], frame.pressure[i]);
+        frame.id[i], static_cast<unsigned>(frame.kind[i]), frame.object[i], p[0], p[1], p[2], v[0],
+        v[1], v[2], frame.density[i], frame.pressure[i]);
     out.write(row, len);
   }
 }

@@ -1,4 +1,5 @@
-// Serialises a ParticleFrame as CSV (.csv), one row per particle, for spreadsheets and quick scripts.
+// Serialises a ParticleFrame as CSV (.csv), one row per particle, for spreadsheets and quick
+// scripts.
 #pragma once
 
 #include <ostream>

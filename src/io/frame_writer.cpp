@@ -16,12 +16,10 @@
 namespace sph::io {
 namespace {
 
-[[noreturn]] void throwFileError(const char* action, const std::filesystem::path& path,
-                                 int error) {
+[[noreturn]] void throwFileError(const char* action, const std::filesystem::path& path, int error) {
   // errno can be 0 when the stream failed without a system call (e.g. a bad_alloc inside it).
   const char* reason = error != 0 ? std::strerror(error) : "unknown error";
-  throw std::runtime_error(std::string("cannot ") + action + " '" + path.string() +
-                           "': " + reason);
+  throw std::runtime_error(std::string("cannot ") + action + " '" + path.string() + "': " + reason);
 }
 
 void requireLength(std::size_t actual, std::size_t expected, const char* name) {
@@ -72,6 +70,7 @@ void writeFileAtomically(const std::filesystem::path& file,
   if (!out) throwFileError("open", tmp, errno);
   TmpGuard guard{tmp};
 
+  errno = 0;
   writeBody(out);
   out.flush();
   if (!out) throwFileError("write", tmp, errno);

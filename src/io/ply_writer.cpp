@@ -20,8 +20,8 @@ namespace {
 
 // x y z, vx vy vz, density, pressure (float) + kind (uchar) + object (int) + id (uint);
 // PLY has no padding, so 41 bytes.
-constexpr std::size_t kVertexBytes = 8 * sizeof(float) + sizeof(std::uint8_t) +
-                                     sizeof(std::int32_t) + sizeof(std::uint32_t);
+constexpr std::size_t kVertexBytes =
+    8 * sizeof(float) + sizeof(std::uint8_t) + sizeof(std::int32_t) + sizeof(std::uint32_t);
 
 char* put(char* at, const void* value, std::size_t bytes) {
   std::memcpy(at, value, bytes);

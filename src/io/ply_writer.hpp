@@ -1,4 +1,5 @@
-// Serialises a ParticleFrame as binary little-endian PLY 1.0 (.ply), one vertex per particle, for point-cloud tools (MeshLab, Blender).
+// Serialises a ParticleFrame as binary little-endian PLY 1.0 (.ply), one vertex per particle, for
+// point-cloud tools (MeshLab, Blender).
 #pragma once
 
 #include <ostream>

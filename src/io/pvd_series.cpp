@@ -45,8 +45,8 @@ void PvdSeries::add(double time, const std::string& relativeFile) {
           << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
           << "  <Collection>\n";
       for (const Entry& entry : entries_) {
-        out << "    <DataSet timestep=\"" << formatDouble(entry.time) << "\" group=\"\" part=\"0\" file=\""
-            << entry.file << "\"/>\n";
+        out << "    <DataSet timestep=\"" << formatDouble(entry.time)
+            << "\" group=\"\" part=\"0\" file=\"" << entry.file << "\"/>\n";
       }
       out << "  </Collection>\n</VTKFile>\n";
     });

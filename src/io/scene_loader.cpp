@@ -18,7 +18,9 @@ using nlohmann::json;
 
 constexpr NumberRule kSupportRatio{1, 4, false, false};
 
-AxisBox readBox(const ObjectReader& in) { return {in.requiredVec3("min"), in.requiredVec3("max")}; }
+AxisBox readBox(const ObjectReader& in) {
+  return {in.requiredVec3("min"), in.requiredVec3("max")};
+}
 
 DomainDesc readDomain(const ObjectReader& in) {
   DomainDesc domain;
@@ -126,8 +128,8 @@ void checkInsideDomain(const ReadContext& context, const AxisBox& box, const std
       const double x = (*corner)[axis];
       if (x < domain.min[axis] || x > domain.max[axis]) {
         context.fail(joinKey(path, key),
-                     "expected a point inside the domain box " + formatVec3(domain.min) +
-                         " to " + formatVec3(domain.max) + ", got " + formatVec3(*corner),
+                     "expected a point inside the domain box " + formatVec3(domain.min) + " to " +
+                         formatVec3(domain.max) + ", got " + formatVec3(*corner),
                      {"domain.min", "domain.max"});
       }
     }
@@ -201,7 +203,7 @@ Scene loadScene(const std::filesystem::path& file, const std::vector<std::string
   json document;
   try {
     document = json::parse(in);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, or out_of_range for 1e999
     throw InputError(name + ": invalid JSON: " + withoutExceptionTag(e.what()));
   }
   return parseScene(document, name, overrides);

@@ -18,6 +18,7 @@ using nlohmann::json;
 struct KeyStep {
   std::string key;
   std::optional<std::size_t> index;
+  bool intoVector = false;  // an index into an array of numbers, whose length is fixed
 };
 
 class OverrideError {
@@ -62,7 +63,7 @@ std::vector<KeyStep> resolveKey(const std::string& dotted, const OverrideError& 
     if (level->shape == KeySchema::Shape::Object) {
       const KeySchema* next = level->find(segment);
       if (next == nullptr) error.fail(unknownKeyText(keyPath, segment, *level));
-      steps.push_back({segment, std::nullopt});
+      steps.push_back({segment, std::nullopt, false});
       keyPath = joinKey(keyPath, segment);
       level = next;
     } else if (level->shape == KeySchema::Shape::Array) {
@@ -71,9 +72,9 @@ std::vector<KeyStep> resolveKey(const std::string& dotted, const OverrideError& 
         error.fail(keyPath + " is an array: expected an index (0, 1, ...) after it, got \"" +
                    segment + "\"");
       }
-      steps.push_back({segment, index});
-      keyPath = joinIndex(keyPath, *index);
       level = &level->element();
+      steps.push_back({segment, index, level->shape == KeySchema::Shape::Value});
+      keyPath = joinIndex(keyPath, *index);
     } else {
       error.fail(keyPath + " holds a single value and has no key \"" + segment + "\"");
     }
@@ -88,19 +89,28 @@ void store(json& document, const std::vector<KeyStep>& steps, json value,
            const OverrideError& error) {
   json* node = &document;
   std::string path;
+  std::string dotted;
   for (const KeyStep& step : steps) {
     if (step.index) {
+      if (node->is_null() && step.intoVector) {
+        error.fail(path + " is not in the scene, so it has no element " + step.key +
+                   "; set the whole array instead, as in " + dotted + "=[x,y,z]");
+      }
       if (node->is_null()) *node = json::array();
       if (!node->is_array()) {
         error.fail(path + " is not an array in the scene (it is " + describeValue(*node) + ")");
       }
-      if (*step.index > node->size()) {
+      // Arrays of objects grow by one at a time; vectors keep their length.
+      const std::size_t end = step.intoVector ? node->size() : node->size() + 1;
+      if (*step.index >= end) {
         error.fail("index " + step.key + " is past the end of " + path + ", which has " +
-                   std::to_string(node->size()) + " elements (an index equal to the count appends)");
+                   std::to_string(node->size()) + " elements" +
+                   (step.intoVector ? "" : " (an index equal to the count appends)"));
       }
       if (*step.index == node->size()) node->push_back(nullptr);
       node = &(*node)[*step.index];
       path = joinIndex(path, *step.index);
+      dotted += "." + step.key;
     } else {
       if (node->is_null()) *node = json::object();
       if (!node->is_object()) {
@@ -108,6 +118,7 @@ void store(json& document, const std::vector<KeyStep>& steps, json value,
       }
       node = &(*node)[step.key];
       path = joinKey(path, step.key);
+      dotted = joinKey(dotted, step.key);
     }
   }
   *node = std::move(value);

@@ -143,8 +143,7 @@ double ObjectReader::checkedNumber(const json& value, const std::string& key,
                  "expected " + rule.describe() + orWhat + ", got " + describeValue(value));
 }
 
-double ObjectReader::number(const std::string& key, double fallback,
-                            const NumberRule& rule) const {
+double ObjectReader::number(const std::string& key, double fallback, const NumberRule& rule) const {
   const json* value = find(key);
   return value == nullptr ? fallback : checkedNumber(*value, key, rule, "");
 }
@@ -173,7 +172,8 @@ Vec3d ObjectReader::checkedVec3(const json& value, const std::string& key) const
   for (std::size_t i = 0; ok && i < 3; ++i) {
     ok = value[i].is_number() && std::isfinite(value[i].get<double>());
   }
-  if (!ok) context_->fail(keyPath(key), "expected an array of 3 numbers, got " + describeValue(value));
+  if (!ok)
+    context_->fail(keyPath(key), "expected an array of 3 numbers, got " + describeValue(value));
   return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
 }
 

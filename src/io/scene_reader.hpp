@@ -71,8 +71,7 @@ class ObjectReader {
   ObjectReader object(const std::string& key) const;
   ObjectReader requiredObject(const std::string& key) const;
   // The elements of an array of objects; absent gives none unless `required`.
-  std::vector<ObjectReader> objectArray(const std::string& key, bool required,
-                                        bool nonEmpty) const;
+  std::vector<ObjectReader> objectArray(const std::string& key, bool required, bool nonEmpty) const;
 
   std::string string(const std::string& key, const std::string& fallback) const;
   bool boolean(const std::string& key, bool fallback) const;
@@ -89,8 +88,8 @@ class ObjectReader {
  private:
   const nlohmann::json* find(const std::string& key) const;
   const nlohmann::json& require(const std::string& key) const;
-  double checkedNumber(const nlohmann::json& value, const std::string& key,
-                       const NumberRule& rule, const char* orWhat) const;
+  double checkedNumber(const nlohmann::json& value, const std::string& key, const NumberRule& rule,
+                       const char* orWhat) const;
   Vec3d checkedVec3(const nlohmann::json& value, const std::string& key) const;
 
   const ReadContext* context_;

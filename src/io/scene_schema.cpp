@@ -8,13 +8,17 @@ namespace {
 
 using Shape = KeySchema::Shape;
 
-KeySchema value(std::string name) { return {std::move(name), Shape::Value, {}}; }
+KeySchema value(std::string name) {
+  return {std::move(name), Shape::Value, {}};
+}
 
 KeySchema object(std::string name, std::vector<KeySchema> keys) {
   return {std::move(name), Shape::Object, std::move(keys)};
 }
 
-KeySchema vec3(std::string name) { return {std::move(name), Shape::Array, {value("[]")}}; }
+KeySchema vec3(std::string name) {
+  return {std::move(name), Shape::Array, {value("[]")}};
+}
 
 KeySchema arrayOf(std::string name, std::vector<KeySchema> elementKeys) {
   return {std::move(name), Shape::Array, {object("[]", std::move(elementKeys))}};
@@ -22,18 +26,16 @@ KeySchema arrayOf(std::string name, std::vector<KeySchema> elementKeys) {
 
 KeySchema buildSchema() {
   return object(
-      "", {value("name"),
-           value("description"),
+      "", {value("name"), value("description"),
            object("domain", {vec3("min"), vec3("max"), value("outside"), value("damped_box"),
                              value("damping")}),
            vec3("gravity"),
-           object("fluid", {value("rest_density"), value("spacing"), value("support_ratio"),
-                            value("kernel"), value("eos"), value("clamp_negative_pressure"),
-                            value("pressure_form"),
-                            object("viscosity", {value("model"), value("value"),
-                                                 value("wall_friction")}),
-                            object("surface_tension", {value("coefficient"), value("threshold")}),
-                            arrayOf("blocks", {vec3("min"), vec3("max"), vec3("velocity")})}),
+           object("fluid",
+                  {value("rest_density"), value("spacing"), value("support_ratio"), value("kernel"),
+                   value("eos"), value("clamp_negative_pressure"), value("pressure_form"),
+                   object("viscosity", {value("model"), value("value"), value("wall_friction")}),
+                   object("surface_tension", {value("coefficient"), value("threshold")}),
+                   arrayOf("blocks", {vec3("min"), vec3("max"), vec3("velocity")})}),
            arrayOf("walls",
                    {value("type"), vec3("min"), vec3("max"), value("layers"), value("closed")}),
            object("calibration", {value("mass"), value("max_expected_speed"),
@@ -96,7 +98,8 @@ std::string joinIndex(const std::string& parent, std::size_t index) {
 
 bool keyWithin(const std::string& inner, const std::string& outer) {
   if (inner.size() == outer.size()) return inner == outer;
-  return !outer.empty() && inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 &&
+  return !outer.empty() && inner.size() > outer.size() &&
+         inner.compare(0, outer.size(), outer) == 0 &&
          (inner[outer.size()] == '.' || inner[outer.size()] == '[');
 }
 

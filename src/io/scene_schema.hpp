@@ -51,8 +51,8 @@ struct NamedValue {
   Enum value;
 };
 
-inline constexpr NamedValue<OutsidePolicy> kOutsideNames[] = {
-    {"remove", OutsidePolicy::Remove}, {"clamp", OutsidePolicy::Clamp}};
+inline constexpr NamedValue<OutsidePolicy> kOutsideNames[] = {{"remove", OutsidePolicy::Remove},
+                                                              {"clamp", OutsidePolicy::Clamp}};
 inline constexpr NamedValue<KernelKind> kKernelNames[] = {{"muller", KernelKind::Muller},
                                                           {"cubic_spline", KernelKind::CubicSpline},
                                                           {"wendland_c2", KernelKind::WendlandC2}};

@@ -11,11 +11,17 @@ namespace {
 
 using nlohmann::json;
 
-json toJson(const Vec3d& v) { return json::array({v[0], v[1], v[2]}); }
+json toJson(const Vec3d& v) {
+  return json::array({v[0], v[1], v[2]});
+}
 
-json toJson(const std::optional<double>& value) { return value ? json(*value) : json(nullptr); }
+json toJson(const std::optional<double>& value) {
+  return value ? json(*value) : json(nullptr);
+}
 
-json boxToJson(const AxisBox& box) { return {{"min", toJson(box.min)}, {"max", toJson(box.max)}}; }
+json boxToJson(const AxisBox& box) {
+  return {{"min", toJson(box.min)}, {"max", toJson(box.max)}};
+}
 
 json domainToJson(const DomainDesc& domain) {
   json out = boxToJson(domain.box);

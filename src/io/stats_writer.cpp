@@ -34,13 +34,13 @@ StatsWriter::StatsWriter(std::filesystem::path csvFile) : path_(std::move(csvFil
 
 void StatsWriter::append(const FrameStats& s) {
   errno = 0;
-  const int written = std::fprintf(
-      file_.get(),
-      "%.9g,%" PRIu64 ",%.9g,%" PRIu64 ",%" PRIu64 ",%.9g,%.9g,%.9g,%.9g,%" PRIu64 ",%" PRIu64
-      ",%" PRIu64 ",%.9g\n",
-      s.time, s.steps, s.dt, s.fluidCount, s.boundaryCount, s.kineticEnergy, s.meanDensity,
-      s.maxDensityError, s.maxSpeed, s.surfaceCount, s.leakedCount, s.removedCount,
-      s.wallMsPerStep);
+  const int written =
+      std::fprintf(file_.get(),
+                   "%.9g,%" PRIu64 ",%.9g,%" PRIu64 ",%" PRIu64 ",%.9g,%.9g,%.9g,%.9g,%" PRIu64
+                   ",%" PRIu64 ",%" PRIu64 ",%.9g\n",
+                   s.time, s.steps, s.dt, s.fluidCount, s.boundaryCount, s.kineticEnergy,
+                   s.meanDensity, s.maxDensityError, s.maxSpeed, s.surfaceCount, s.leakedCount,
+                   s.removedCount, s.wallMsPerStep);
   if (written < 0) throwFileError("write", path_);
   flushOrThrow();
 }

@@ -24,8 +24,8 @@ struct AppendedArray {
   const char* name;
   int components;
   std::uint64_t bytes;
-  const void* data;            // unused for a sequence
-  bool isSequence;             // Int64 values sequenceStart, sequenceStart + 1, ...
+  const void* data;  // unused for a sequence
+  bool isSequence;   // Int64 values sequenceStart, sequenceStart + 1, ...
   std::int64_t sequenceStart;
 };
 

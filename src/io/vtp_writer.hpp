@@ -1,4 +1,5 @@
-// Serialises a ParticleFrame as binary VTK XML PolyData (.vtp) with the frame's fields as point data, which ParaView opens directly.
+// Serialises a ParticleFrame as binary VTK XML PolyData (.vtp) with the frame's fields as point
+// data, which ParaView opens directly.
 #pragma once
 
 #include <ostream>

@@ -238,6 +238,13 @@ TEST_F(SceneFile, EmptyFileIsInvalidJson) {
   EXPECT_NE(message.find(file.string() + ": invalid JSON"), std::string::npos) << message;
 }
 
+TEST_F(SceneFile, NumberTooLargeForADouble) {
+  const auto file = write("huge.json", R"({"time": {"duration": 1e999}})");
+  const std::string message = loadError(file);
+  EXPECT_EQ(message.rfind(file.string() + ": invalid JSON: ", 0), 0u) << message;
+  EXPECT_NE(message.find("1e999"), std::string::npos) << message;
+}
+
 TEST_F(SceneFile, ValidationErrorsNameTheFile) {
   json document = minimalSceneJson();
   document["fluid"]["spacing"] = -0.01;

@@ -30,12 +30,10 @@ void expectContains(const std::string& message, const std::vector<std::string>& 
 }
 
 TEST(SceneOverrides, ChangeValues) {
-  const Scene scene = parseWith(completeSceneJson(), {"fluid.viscosity.value=0.07",
-                                                      "output.format=csv",
-                                                      "domain.damped_box=false",
-                                                      "name=renamed",
-                                                      "description=\"quoted, with = sign\"",
-                                                      "fluid.kernel = cubic_spline"});
+  const Scene scene = parseWith(
+      completeSceneJson(),
+      {"fluid.viscosity.value=0.07", "output.format=csv", "domain.damped_box=false", "name=renamed",
+       "description=\"quoted, with = sign\"", "fluid.kernel = cubic_spline"});
   EXPECT_EQ(scene.fluid.viscosity, 0.07);
   EXPECT_EQ(scene.output.format, FrameFormat::Csv);
   EXPECT_FALSE(scene.domain.dampedBox);
@@ -52,21 +50,21 @@ TEST(SceneOverrides, DoNotChangeTheCallersDocument) {
 }
 
 TEST(SceneOverrides, IndexArrays) {
-  const Scene scene = parseWith(completeSceneJson(), {"fluid.blocks.0.max=[0.1,0.2,0.1]",
-                                                      "fluid.blocks.1.velocity.0=2",
-                                                      "gravity.1=-1.62", "walls.0.layers=1"});
+  const Scene scene = parseWith(completeSceneJson(),
+                                {"fluid.blocks.0.max=[0.1,0.2,0.1]", "fluid.blocks.0.velocity.2=2",
+                                 "gravity.1=-1.62", "walls.0.layers=1"});
   EXPECT_EQ(scene.fluid.blocks[0].box.max, (Vec3d{0.1, 0.2, 0.1}));
-  EXPECT_EQ(scene.fluid.blocks[1].velocity, (Vec3d{2, 0, 0}));
+  EXPECT_EQ(scene.fluid.blocks[0].velocity, (Vec3d{1, 0, 2}));
   EXPECT_EQ(scene.gravity, (Vec3d{0, -1.62, 0.5}));
   EXPECT_EQ(scene.walls[0].layers, 1);
 }
 
 TEST(SceneOverrides, CreateMissingOptionalKeys) {
   // The minimal scene has no calibration, time or walls.
-  const Scene scene = parseWith(minimalSceneJson(),
-                                {"calibration.speed_of_sound=40", "time.fixed_dt=0.001",
-                                 "walls.0.min=[0,0,0]", "walls.0.max=[1,1,1]",
-                                 "fluid.blocks.1={\"min\":[0.6,0,0],\"max\":[1,0.2,0.2]}"});
+  const Scene scene =
+      parseWith(minimalSceneJson(),
+                {"calibration.speed_of_sound=40", "time.fixed_dt=0.001", "walls.0.min=[0,0,0]",
+                 "walls.0.max=[1,1,1]", "fluid.blocks.1={\"min\":[0.6,0,0],\"max\":[1,0.2,0.2]}"});
   EXPECT_EQ(scene.calibration.speedOfSound, 40.0);
   EXPECT_FALSE(scene.calibration.mass.has_value());
   EXPECT_EQ(scene.time.fixedDt, 0.001);
@@ -169,22 +167,33 @@ TEST(SceneOverrides, ValuesFromTheFileAreNotBlamedOnOverrides) {
 }
 
 TEST(SceneOverrides, ReplacedOverridesAreNotBlamed) {
-  const std::string message =
-      parseError(minimalSceneJson(), {"fluid.viscosity.value=-1", "fluid.viscosity={\"value\":-2}"});
+  const std::string message = parseError(
+      minimalSceneJson(), {"fluid.viscosity.value=-1", "fluid.viscosity={\"value\":-2}"});
   EXPECT_EQ(message,
             "scenes/x.json: fluid.viscosity.value: expected a non-negative number, got -2 (from "
             "--set fluid.viscosity={\"value\":-2})");
 }
 
+TEST(SceneOverrides, VectorsAreNotCreatedOneElementAtATime) {
+  // Block 1 of the complete scene has no velocity; gravity has three elements.
+  EXPECT_EQ(parseError(completeSceneJson(), {"fluid.blocks.1.velocity.0=2"}),
+            "scenes/x.json: --set fluid.blocks.1.velocity.0=2: fluid.blocks[1].velocity is not "
+            "in the scene, so it has no element 0; set the whole array instead, as in "
+            "fluid.blocks.1.velocity=[x,y,z]");
+  EXPECT_EQ(
+      parseWith(completeSceneJson(), {"fluid.blocks.1.velocity=[2,0,0]"}).fluid.blocks[1].velocity,
+      (Vec3d{2, 0, 0}));
+}
+
 TEST(SceneOverrides, ApplyOverridesReportsKeyPaths) {
-  json document = minimalSceneJson();
+  json document = completeSceneJson();
   const std::vector<AppliedOverride> applied =
       applyOverrides(document, {"fluid.blocks.0.velocity.2=1", "time.cfl=0.5"}, kSource);
   ASSERT_EQ(applied.size(), 2u);
   EXPECT_EQ(applied[0].keyPath, "fluid.blocks[0].velocity[2]");
   EXPECT_EQ(applied[0].text, "fluid.blocks.0.velocity.2=1");
   EXPECT_EQ(applied[1].keyPath, "time.cfl");
-  EXPECT_EQ(document["fluid"]["blocks"][0]["velocity"], json::parse("[null,null,1]"));
+  EXPECT_EQ(document["fluid"]["blocks"][0]["velocity"], json::parse("[1,0,1]"));
   EXPECT_EQ(document["time"]["cfl"], 0.5);
 }
 

@@ -6,7 +6,9 @@
 namespace sph::io {
 namespace {
 
-const KeySchema& level(const std::string& key) { return sceneSchema().child(key); }
+const KeySchema& level(const std::string& key) {
+  return sceneSchema().child(key);
+}
 
 TEST(SceneSchema, NearestKeyFindsTypos) {
   EXPECT_EQ(nearestKey("viscosty", level("fluid")), "viscosity");

@@ -17,9 +17,9 @@ namespace fs = std::filesystem;
 class StatsWriterTest : public testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("sph_stats_" + std::to_string(::getpid()) + "_" +
-            testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ =
+        fs::temp_directory_path() / ("sph_stats_" + std::to_string(::getpid()) + "_" +
+                                     testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -74,7 +74,8 @@ TEST_F(StatsWriterTest, HeaderThenOneFlushedRowPerAppend) {
   const std::vector<std::string> lines = readLines(file);
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0], kHeader);
-  EXPECT_EQ(lines[1], "0.25,101,0.00015,8000,1234,1.5,1000.125,0.0125,2.75,300,1,12345678901234,3.5");
+  EXPECT_EQ(lines[1],
+            "0.25,101,0.00015,8000,1234,1.5,1000.125,0.0125,2.75,300,1,12345678901234,3.5");
   const std::vector<std::string> fields = split(lines[2]);
   ASSERT_EQ(fields.size(), 13u);
   EXPECT_EQ(std::stod(fields[0]), 0.5);

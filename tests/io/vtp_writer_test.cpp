@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -25,9 +24,9 @@ namespace fs = std::filesystem;
 class VtpWriterTest : public testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("sph_vtp_" + std::to_string(::getpid()) + "_" +
-            testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ =
+        fs::temp_directory_path() / ("sph_vtp_" + std::to_string(::getpid()) + "_" +
+                                     testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -74,10 +73,23 @@ struct ParsedVtp {
   std::string trailer;  // what follows the last block
 };
 
+// std::regex is avoided: GCC 12 warns inside <regex> at -O1 and above (-Wmaybe-uninitialized).
 std::string attribute(const std::string& tag, const std::string& name) {
-  std::smatch match;
-  if (!std::regex_search(tag, match, std::regex(" " + name + "=\"([^\"]*)\""))) return "";
-  return match[1];
+  const std::string key = " " + name + "=\"";
+  const std::size_t start = tag.find(key);
+  if (start == std::string::npos) return "";
+  const std::size_t valueStart = start + key.size();
+  return tag.substr(valueStart, tag.find('"', valueStart) - valueStart);
+}
+
+// Every `<name ...>` tag in `text`, in document order.
+std::vector<std::string> tags(const std::string& text, const std::string& name) {
+  std::vector<std::string> found;
+  for (std::size_t at = text.find("<" + name + " "); at != std::string::npos;
+       at = text.find("<" + name + " ", at + 1)) {
+    found.push_back(text.substr(at, text.find('>', at) + 1 - at));
+  }
+  return found;
 }
 
 ParsedVtp parseVtp(const std::string& content) {
@@ -88,21 +100,19 @@ ParsedVtp parseVtp(const std::string& content) {
   const std::string header = content.substr(0, appended);
   const std::size_t base = content.find('_', appended + marker.size()) + 1;
 
-  std::smatch piece;
-  if (!std::regex_search(header, piece, std::regex("<Piece[^>]*>"))) throw std::runtime_error("no Piece");
-  vtp.points = std::stoull(attribute(piece[0], "NumberOfPoints"));
-  vtp.verts = std::stoull(attribute(piece[0], "NumberOfVerts"));
-
-  std::smatch time;
-  if (std::regex_search(header, time, std::regex("Name=\"TIME\"[^>]*>([^<]*)</DataArray>"))) {
-    vtp.time = time[1];
-  }
+  const std::vector<std::string> pieces = tags(header, "Piece");
+  if (pieces.size() != 1) throw std::runtime_error("expected one Piece");
+  vtp.points = std::stoull(attribute(pieces[0], "NumberOfPoints"));
+  vtp.verts = std::stoull(attribute(pieces[0], "NumberOfVerts"));
 
   std::size_t end = base;
-  const std::regex dataArray("<DataArray[^>]*format=\"appended\"[^>]*/>");
-  for (auto it = std::sregex_iterator(header.begin(), header.end(), dataArray);
-       it != std::sregex_iterator(); ++it) {
-    const std::string tag = it->str();
+  for (const std::string& tag : tags(header, "DataArray")) {
+    if (attribute(tag, "Name") == "TIME") {
+      const std::size_t valueStart = header.find(tag) + tag.size();
+      vtp.time = header.substr(valueStart, header.find('<', valueStart) - valueStart);
+      continue;
+    }
+    if (attribute(tag, "format") != "appended") throw std::runtime_error("not appended: " + tag);
     ArrayInfo info;
     info.type = attribute(tag, "type");
     const std::string components = attribute(tag, "NumberOfComponents");
