@@ -81,7 +81,7 @@ struct OutputDesc {
 };
 
 struct FailureDesc {
-  double maxDensityError = 1.0;  // |ρ/ρ0 - 1| past which the run stops as failed
+  double maxDensityError = 0.5;  // compression ρ/ρ0 - 1 past which the run stops as failed
 };
 
 struct Scene {

@@ -71,6 +71,8 @@ class Simulation {
   FrameStats stats() const;
   // The particles ordered by id: fluid first, then walls if asked.
   ParticleFrame frame(bool includeBoundary = true) const;
+  // The static wall particles alone (they never move: runs write them once).
+  ParticleFrame boundaryFrame() const;
 
  private:
   struct Impl;

@@ -13,7 +13,7 @@ struct FrameStats {
   std::uint64_t boundaryCount = 0;
   double kineticEnergy = 0.0;    // J
   double meanDensity = 0.0;      // kg/m³
-  double maxDensityError = 0.0;  // max |ρ/ρ0 - 1|
+  double maxDensityError = 0.0;  // max (ρ/ρ0 - 1): compression; a free surface reads low
   double maxSpeed = 0.0;         // m/s
   std::uint64_t surfaceCount = 0;
   std::uint64_t leakedCount = 0;

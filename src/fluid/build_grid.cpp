@@ -1,3 +1,5 @@
+#include <cmath>
+
 #include "backend/cpu_parallel.hpp"
 #include "fluid/stages.hpp"
 
@@ -13,19 +15,31 @@ SPH_HD bool insideDomain(const DomainParameters& d, Vec3 p) {
          p.z >= d.min.z && p.z <= d.max.z;
 }
 
+// The extent of the particles inside the domain; NaN positions count as outside.
+struct Bounds {
+  Vec3 lo, hi;
+  bool any;
+};
+
+SPH_HD Bounds merge(const Bounds& a, const Bounds& b) {
+  if (!a.any) return b;
+  if (!b.any) return a;
+  return Bounds{Vec3{fminf(a.lo.x, b.lo.x), fminf(a.lo.y, b.lo.y), fminf(a.lo.z, b.lo.z)},
+                Vec3{fmaxf(a.hi.x, b.hi.x), fmaxf(a.hi.y, b.hi.y), fmaxf(a.hi.z, b.hi.z)}, true};
+}
+
 }  // namespace
 
 std::size_t buildGrid(FluidParticles& fluid, Grid& grid, const DomainParameters& domain) {
   const std::size_t n = fluid.count;
-  const GridSpec spec = grid.spec;
-  const std::uint32_t outsideBin = spec.cellCount;
   Vec4* position = fluid.position.data();
   Vec4* velocity = fluid.velocity.data();
   std::uint32_t* cell = fluid.cell.data();
 
-  backend::forEach(n, SPH_LAMBDA(std::size_t i) {
-    Vec3 p = xyz(position[i]);
-    if (!insideDomain(domain, p) && domain.clampOutside && isFinite(p)) {
+  if (domain.clampOutside) {
+    backend::forEach(n, SPH_LAMBDA(std::size_t i) {
+      Vec3 p = xyz(position[i]);
+      if (insideDomain(domain, p) || !isFinite(p)) return;
       // Put it back on the face it crossed and stop it moving further out.
       Vec3 v = xyz(velocity[i]);
       if (p.x < domain.min.x && v.x < 0.0f) v.x = 0.0f;
@@ -39,7 +53,23 @@ std::size_t buildGrid(FluidParticles& fluid, Grid& grid, const DomainParameters&
                clampFloat(p.z, domain.min.z, domain.max.z)};
       position[i] = makeVec4(p);
       velocity[i] = makeVec4(v);
-    }
+    });
+  }
+
+  const Bounds bounds = backend::reduce(
+      n, Bounds{Vec3{0, 0, 0}, Vec3{0, 0, 0}, false},
+      SPH_LAMBDA(std::size_t i) {
+        const Vec3 p = xyz(position[i]);
+        return insideDomain(domain, p) ? Bounds{p, p, true} : Bounds{p, p, false};
+      },
+      SPH_LAMBDA(const Bounds& a, const Bounds& b) { return merge(a, b); });
+  grid.spec = bounds.any ? makeGrid(bounds.lo, bounds.hi, grid.cellSize)
+                         : makeGrid(domain.min, domain.min, grid.cellSize);
+  const GridSpec spec = grid.spec;
+  const std::uint32_t outsideBin = spec.cellCount;
+
+  backend::forEach(n, SPH_LAMBDA(std::size_t i) {
+    const Vec3 p = xyz(position[i]);
     cell[i] = insideDomain(domain, p) ? cellIndex(spec, clampToGrid(spec, cellCoordinate(spec, p)))
                                       : outsideBin;
   });

@@ -13,6 +13,7 @@ void densityPass(FluidParticles& fluid, const Grid& grid, const BoundaryParticle
                  const FluidParameters& params, Kernels kernels) {
   const GridSpec spec = grid.spec;
   const std::uint32_t* cellStart = grid.cellStart.data();
+  const GridSpec wallGrid = boundary.grid;
   const std::uint32_t* wallCellStart = boundary.cellStart.data();
   const Vec4* position = fluid.position.data();
   const Vec4* wall = boundary.position.data();
@@ -28,7 +29,7 @@ void densityPass(FluidParticles& fluid, const Grid& grid, const BoundaryParticle
     });
     float wallSum = 0.0f;  // Akinci et al. 2012 eq. 6: walls count with mass ρ0 ψ_b
     if (wallCellStart != nullptr) {
-      forEachNeighbor(spec, wallCellStart, xi, [&](std::uint32_t b) {
+      forEachNeighbor(wallGrid, wallCellStart, xi, [&](std::uint32_t b) {
         wallSum += wall[b].w * kernels.W(lengthSquared(xi - xyz(wall[b])));
       });
     }

@@ -13,6 +13,7 @@ void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles&
                const FluidParameters& params, Kernels kernels) {
   const GridSpec spec = grid.spec;
   const std::uint32_t* cellStart = grid.cellStart.data();
+  const GridSpec wallGrid = boundary.grid;
   const std::uint32_t* wallCellStart = boundary.cellStart.data();
   const Vec4* position = fluid.position.data();
   const Vec4* velocity = fluid.velocity.data();
@@ -54,7 +55,7 @@ void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles&
     });
 
     if (wallCellStart != nullptr) {
-      forEachNeighbor(spec, wallCellStart, xi, [&](std::uint32_t b) {
+      forEachNeighbor(wallGrid, wallCellStart, xi, [&](std::uint32_t b) {
         const Vec3 rib = xi - xyz(wall[b]);
         const float r2 = lengthSquared(rib);
         if (r2 >= h2 || r2 <= 0.0f) return;

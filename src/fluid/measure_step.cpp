@@ -7,8 +7,11 @@ namespace sph::fluid {
 
 namespace {
 
+// Compression only: a free surface's particles lack neighbours and read low, which is not
+// an error of the method.
 SPH_HD float densityError(float density, float restDensity) {
-  return fabsf(density / restDensity - 1.0f);
+  const float e = density / restDensity - 1.0f;
+  return e > 0.0f ? e : 0.0f;
 }
 
 SPH_HD StepMeasures combine(StepMeasures a, StepMeasures b) {
@@ -54,7 +57,7 @@ BadParticle findBadParticle(const FluidParticles& fluid, float restDensity,
     } else if (!isFinite(v)) {
       here = {true, fluid.id[i], "velocity", length(v)};
     } else if (densityError(rho, restDensity) > maxDensityError) {
-      here = {true, fluid.id[i], "density error |rho/rho0 - 1|", densityError(rho, restDensity)};
+      here = {true, fluid.id[i], "compression rho/rho0 - 1", densityError(rho, restDensity)};
     }
     if (here.found && (!bad.found || here.id < bad.id)) bad = here;
   }

@@ -30,17 +30,20 @@ struct FluidParticles {
   Buffer<std::uint32_t> scratchId;
 };
 
-// Static wall particles (Akinci et al. 2012), sorted by cell once at set-up.
+// Static wall particles (Akinci et al. 2012), sorted by cell of their own grid once at set-up.
 struct BoundaryParticles {
   std::size_t count = 0;
+  GridSpec grid;                    // covers the walls with a cell to spare
   Buffer<Vec4> position;        // xyz; w = volume ψ_b = 1 / Σ_k W_bk, m³
   Buffer<std::uint32_t> id;     // stable particle id
   Buffer<std::uint32_t> cellStart;  // cellCount + 1
 };
 
-// The uniform grid over the fluid: particles of cell c are [cellStart[c], cellStart[c+1]).
-// The extra last bin holds particles outside the grid, which buildGrid drops.
+// The uniform grid over the fluid, rebuilt each step over the particles' bounding box (so an
+// empty corner of a large domain costs nothing): particles of cell c are
+// [cellStart[c], cellStart[c+1]). The extra last bin holds particles outside the domain.
 struct Grid {
+  float cellSize = 0.0f;  // h
   GridSpec spec;
   Buffer<std::uint32_t> cellStart;  // cellCount + 2
 };

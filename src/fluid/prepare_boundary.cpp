@@ -1,3 +1,4 @@
+#include <cmath>
 #include <vector>
 
 #include "backend/cpu_parallel.hpp"
@@ -7,10 +8,18 @@
 
 namespace sph::fluid {
 
-void prepareBoundary(BoundaryParticles& boundary, const GridSpec& grid,
-                     const FluidParameters& params) {
+void prepareBoundary(BoundaryParticles& boundary, const FluidParameters& params) {
   const std::size_t n = boundary.count;
   if (n == 0) return;
+  Vec3 lo = xyz(boundary.position[0]), hi = lo;
+  for (std::size_t i = 1; i < n; ++i) {
+    const Vec3 p = xyz(boundary.position[i]);
+    lo = Vec3{fminf(lo.x, p.x), fminf(lo.y, p.y), fminf(lo.z, p.z)};
+    hi = Vec3{fmaxf(hi.x, p.x), fmaxf(hi.y, p.y), fmaxf(hi.z, p.z)};
+  }
+  const Vec3 margin{params.h, params.h, params.h};
+  boundary.grid = makeGrid(lo - margin, hi + margin, params.h);
+  const GridSpec grid = boundary.grid;
   Buffer<std::uint32_t> cell(n), order(n);
   for (std::size_t i = 0; i < n; ++i) {
     cell[i] = cellIndex(grid, clampToGrid(grid, cellCoordinate(grid, xyz(boundary.position[i]))));

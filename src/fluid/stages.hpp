@@ -13,10 +13,9 @@ namespace sph::fluid {
 // Particles outside the domain are clamped back or removed; returns how many were removed.
 std::size_t buildGrid(FluidParticles& fluid, Grid& grid, const DomainParameters& domain);
 
-// Sorts the wall particles by cell of `grid` and computes each one's volume ψ_b (Akinci
-// et al. 2012, eq. 4). Once, at set-up.
-void prepareBoundary(BoundaryParticles& boundary, const GridSpec& grid,
-                     const FluidParameters& params);
+// Builds the walls' grid, sorts the wall particles by cell and computes each one's volume ψ_b
+// (Akinci et al. 2012, eq. 4). Once, at set-up.
+void prepareBoundary(BoundaryParticles& boundary, const FluidParameters& params);
 
 // Reads position, boundary. Writes density and pressure (seed 1 Algorithm 1).
 void computeDensityAndPressure(FluidParticles& fluid, const Grid& grid,
@@ -31,7 +30,7 @@ void computeForces(FluidParticles& fluid, const Grid& grid, const BoundaryPartic
 struct StepMeasures {
   float maxSpeed = 0.0f;
   float maxAcceleration = 0.0f;
-  float maxDensityError = 0.0f;  // max |ρ/ρ0 - 1|
+  float maxDensityError = 0.0f;  // max (ρ/ρ0 - 1, 0): compression
   bool finite = true;            // no NaN or infinity in velocity, acceleration, density
 };
 StepMeasures measureStep(const FluidParticles& fluid, float restDensity);

@@ -27,17 +27,6 @@ inline double timedMs(Stage&& stage) {
       .count();
 }
 
-// The grid covers the domain and every wall particle, so no index ever leaves it.
-inline GridSpec gridCovering(const fluid::DomainParameters& domain, const std::vector<Vec3>& walls,
-                      float cellSize) {
-  Vec3 lo = domain.min, hi = domain.max;
-  for (const Vec3& p : walls) {
-    lo = Vec3{std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = Vec3{std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  return makeGrid(lo, hi, cellSize);
-}
-
 }  // namespace detail
 
 struct Simulation::Impl {
@@ -73,7 +62,7 @@ struct Simulation::Impl {
       const auto points = sim::sampleTank(tank, scene.fluid.spacing, scene.gravity);
       wallPoints.insert(wallPoints.end(), points.begin(), points.end());
     }
-    grid.spec = detail::gridCovering(domain, wallPoints, params.h);
+    grid.cellSize = params.h;
 
     const std::size_t n = fluidPoints.size();
     initialFluid = n;
@@ -97,7 +86,7 @@ struct Simulation::Impl {
       boundary.position[b] = makeVec4(wallPoints[b]);
       boundary.id[b] = static_cast<std::uint32_t>(n + b);
     }
-    fluid::prepareBoundary(boundary, grid.spec, params);
+    fluid::prepareBoundary(boundary, params);
 
     calibration.fluidParticles = n;
     calibration.boundaryParticles = boundary.count;

@@ -26,7 +26,7 @@ FrameStats Simulation::stats() const {
       f.count, Sums{},
       [&](std::size_t i) {
         const float v2 = lengthSquared(xyz(f.velocity[i]));
-        const float error = std::abs(f.density[i] / restDensity - 1.0f);
+        const float error = std::max(f.density[i] / restDensity - 1.0f, 0.0f);
         return Sums{0.5 * s.params.mass * v2, f.density[i], error, v2,
                     f.acceleration[i].w > threshold ? 1u : 0u};
       },
@@ -54,26 +54,20 @@ FrameStats Simulation::stats() const {
   return out;
 }
 
-ParticleFrame Simulation::frame(bool includeBoundary) const {
-  const Impl& s = *impl_;
-  const fluid::FluidParticles& f = s.fluid;
-  const fluid::BoundaryParticles& b = s.boundary;
-  // Fluid ids are 0 .. initialFluid-1 with gaps where particles were removed; walls follow.
-  std::vector<std::int64_t> slotOfId(s.initialFluid, -1);
-  for (std::size_t i = 0; i < f.count; ++i) slotOfId[f.id[i]] = static_cast<std::int64_t>(i);
+namespace {
 
+struct FrameBuilder {
   ParticleFrame out;
-  out.time = s.time;
-  out.step = s.steps;
-  const std::size_t n = f.count + (includeBoundary ? b.count : 0);
-  out.id.reserve(n);
-  out.position.reserve(3 * n);
-  out.velocity.reserve(3 * n);
-  out.density.reserve(n);
-  out.pressure.reserve(n);
-  out.kind.reserve(n);
-  out.object.reserve(n);
-  auto push = [&](std::uint32_t id, Vec4 x, Vec4 v, float rho, float p, ParticleKind kind) {
+  void reserve(std::size_t n) {
+    out.id.reserve(n);
+    out.position.reserve(3 * n);
+    out.velocity.reserve(3 * n);
+    out.density.reserve(n);
+    out.pressure.reserve(n);
+    out.kind.reserve(n);
+    out.object.reserve(n);
+  }
+  void push(std::uint32_t id, Vec4 x, Vec4 v, float rho, float p, ParticleKind kind) {
     out.id.push_back(id);
     out.position.insert(out.position.end(), {x.x, x.y, x.z});
     out.velocity.insert(out.velocity.end(), {v.x, v.y, v.z});
@@ -81,20 +75,51 @@ ParticleFrame Simulation::frame(bool includeBoundary) const {
     out.pressure.push_back(p);
     out.kind.push_back(static_cast<std::uint8_t>(kind));
     out.object.push_back(-1);
-  };
+  }
+};
+
+// Fluid ids are 0 .. initialFluid-1 with gaps where particles were removed.
+void appendFluid(FrameBuilder& b, const fluid::FluidParticles& f, std::uint64_t initialFluid) {
+  std::vector<std::int64_t> slotOfId(initialFluid, -1);
+  for (std::size_t i = 0; i < f.count; ++i) slotOfId[f.id[i]] = static_cast<std::int64_t>(i);
   for (std::int64_t slot : slotOfId) {
     if (slot < 0) continue;
     const auto i = static_cast<std::size_t>(slot);
-    push(f.id[i], f.position[i], f.velocity[i], f.density[i], f.pressure[i], ParticleKind::Fluid);
+    b.push(f.id[i], f.position[i], f.velocity[i], f.density[i], f.pressure[i],
+           ParticleKind::Fluid);
   }
-  if (includeBoundary) {
-    std::vector<std::size_t> byId(b.count);
-    for (std::size_t k = 0; k < b.count; ++k) byId[b.id[k] - s.initialFluid] = k;
-    for (std::size_t k : byId)
-      push(b.id[k], b.position[k], Vec4{0, 0, 0, 0}, s.params.restDensity, 0.0f,
-           ParticleKind::Boundary);
-  }
-  return out;
+}
+
+// Wall ids follow the fluid's.
+void appendBoundary(FrameBuilder& b, const fluid::BoundaryParticles& w, std::uint64_t firstId,
+                    float restDensity) {
+  std::vector<std::size_t> byId(w.count);
+  for (std::size_t k = 0; k < w.count; ++k) byId[w.id[k] - firstId] = k;
+  for (std::size_t k : byId)
+    b.push(w.id[k], w.position[k], Vec4{0, 0, 0, 0}, restDensity, 0.0f, ParticleKind::Boundary);
+}
+
+}  // namespace
+
+ParticleFrame Simulation::frame(bool includeBoundary) const {
+  const Impl& s = *impl_;
+  FrameBuilder b;
+  b.out.time = s.time;
+  b.out.step = s.steps;
+  b.reserve(s.fluid.count + (includeBoundary ? s.boundary.count : 0));
+  appendFluid(b, s.fluid, s.initialFluid);
+  if (includeBoundary) appendBoundary(b, s.boundary, s.initialFluid, s.params.restDensity);
+  return std::move(b.out);
+}
+
+ParticleFrame Simulation::boundaryFrame() const {
+  const Impl& s = *impl_;
+  FrameBuilder b;
+  b.out.time = s.time;
+  b.out.step = s.steps;
+  b.reserve(s.boundary.count);
+  appendBoundary(b, s.boundary, s.initialFluid, s.params.restDensity);
+  return std::move(b.out);
 }
 
 }  // namespace sph

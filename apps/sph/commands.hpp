@@ -1,0 +1,40 @@
+// The sph subcommands (DESIGN.md's command-line contract). Each returns the process exit code:
+// 0 done, 2 bad input, 3 the simulation failed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sph::cli {
+
+enum ExitCode { kExitOk = 0, kExitBadInput = 2, kExitSimulationFailed = 3 };
+
+struct RunOptions {
+  std::string scene;
+  std::string out;  // default: out/<scene name>
+  std::string backend = "auto";
+  int threads = 0;  // 0: all hardware threads
+  std::vector<std::string> overrides;
+  bool force = false;
+  bool quiet = false;
+};
+
+struct BenchOptions {
+  std::vector<int> sizes{4096, 16384, 65536, 262144};
+  std::string backend = "auto";
+  int threads = 0;
+  int warmupSteps = 20;
+  int steps = 50;
+  std::string json;  // also write the results here
+};
+
+int runCommand(const RunOptions& options);
+int validateCommand(const std::string& scene, const std::vector<std::string>& overrides);
+int infoCommand();
+int benchCommand(const BenchOptions& options);
+
+// "auto" and "cpu" are served; "cuda" is refused with a clear message while the CUDA backend is
+// not built. Returns false and prints why when the backend cannot be used.
+bool checkBackend(const std::string& backend);
+
+}  // namespace sph::cli

@@ -1,0 +1,92 @@
+#include "report.hpp"
+
+#include "backend/cpu_parallel.hpp"
+
+namespace sph::cli {
+
+namespace {
+
+const char* origin(bool fromScene) { return fromScene ? "set by scene" : "derived"; }
+
+const char* eosStiffnessName(EquationOfState eos) {
+  switch (eos) {
+    case EquationOfState::Linear:
+      return "k (p = k(rho - rho0))";
+    case EquationOfState::Ratio:
+      return "k (p = k(rho/rho0 - 1))";
+    default:
+      return "B (Tait)";
+  }
+}
+
+}  // namespace
+
+void printCalibration(std::FILE* out, const Simulation& sim) {
+  const Calibration& c = sim.calibration();
+  const Scene& s = sim.scene();
+  std::fprintf(out, "scene %s: %llu fluid particles, %llu boundary particles\n",
+               s.sourcePath.c_str(), static_cast<unsigned long long>(c.fluidParticles),
+               static_cast<unsigned long long>(c.boundaryParticles));
+  std::fprintf(out, "  spacing d            %.6g m, support radius h = %.6g m\n", c.spacing,
+               c.supportRadius);
+  std::fprintf(out, "  particle mass        %.6g kg (%s)\n", c.mass, origin(c.massFromScene));
+  std::fprintf(out, "  max expected speed   %.6g m/s (%s)\n", c.maxExpectedSpeed,
+               origin(c.maxExpectedSpeedFromScene));
+  std::fprintf(out, "  speed of sound c0    %.6g m/s (%s)\n", c.soundSpeed,
+               origin(c.soundSpeedFromScene));
+  std::fprintf(out, "  stiffness %-10s %.6g (%s)\n", eosStiffnessName(s.fluid.eos), c.stiffness,
+               origin(c.stiffnessFromScene));
+  std::fprintf(out, "  kinematic viscosity  %.6g m^2/s\n", c.kinematicViscosity);
+  std::fprintf(out, "  first time step      %.6g s (CFL %.3g; adaptive unless time.fixed_dt)\n",
+               c.initialDt, s.time.cfl);
+}
+
+nlohmann::json calibrationJson(const Calibration& c) {
+  return {{"spacing", c.spacing},
+          {"support_radius", c.supportRadius},
+          {"mass", c.mass},
+          {"mass_from_scene", c.massFromScene},
+          {"max_expected_speed", c.maxExpectedSpeed},
+          {"max_expected_speed_from_scene", c.maxExpectedSpeedFromScene},
+          {"speed_of_sound", c.soundSpeed},
+          {"speed_of_sound_from_scene", c.soundSpeedFromScene},
+          {"stiffness", c.stiffness},
+          {"stiffness_from_scene", c.stiffnessFromScene},
+          {"kinematic_viscosity", c.kinematicViscosity},
+          {"initial_dt", c.initialDt},
+          {"fluid_particles", c.fluidParticles},
+          {"boundary_particles", c.boundaryParticles}};
+}
+
+nlohmann::json statsJson(const FrameStats& s) {
+  return {{"time", s.time},
+          {"steps", s.steps},
+          {"dt", s.dt},
+          {"fluid_count", s.fluidCount},
+          {"boundary_count", s.boundaryCount},
+          {"kinetic_energy", s.kineticEnergy},
+          {"mean_density", s.meanDensity},
+          {"max_density_error", s.maxDensityError},
+          {"max_speed", s.maxSpeed},
+          {"surface_count", s.surfaceCount},
+          {"leaked_count", s.leakedCount},
+          {"removed_count", s.removedCount},
+          {"wall_ms_per_step", s.wallMsPerStep}};
+}
+
+const char* backendName() { return "cpu"; }
+
+const char* formatName(FrameFormat format) {
+  switch (format) {
+    case FrameFormat::Vtp:
+      return "vtp";
+    case FrameFormat::Ply:
+      return "ply";
+    case FrameFormat::Csv:
+      return "csv";
+    default:
+      return "none";
+  }
+}
+
+}  // namespace sph::cli

@@ -1,0 +1,22 @@
+// What the commands print and what summary.json holds.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "sph/simulation.hpp"
+
+namespace sph::cli {
+
+// The derived values (seed 1 §8.1), each marked derived or set by the scene.
+void printCalibration(std::FILE* out, const Simulation& sim);
+
+nlohmann::json calibrationJson(const Calibration& c);
+nlohmann::json statsJson(const FrameStats& s);
+
+const char* backendName();
+const char* formatName(FrameFormat format);
+
+}  // namespace sph::cli

@@ -1,0 +1,130 @@
+// sph run: simulate a scene, writing frames at the scene's frame rate (independent of the
+// adaptive time step), one stats row per frame, and a summary at the end.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "backend/cpu_parallel.hpp"
+#include "commands.hpp"
+#include "io/frame_writer.hpp"
+#include "io/scene_loader.hpp"
+#include "progress.hpp"
+#include "report.hpp"
+#include "run_output.hpp"
+#include "sph/error.hpp"
+#include "sph/simulation.hpp"
+
+namespace sph::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+struct RunRecord {
+  nlohmann::json failure;  // null when the run completed
+  double wallSeconds = 0.0;
+};
+
+void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecord& record) {
+  const double steps = double(sim.stepCount());
+  nlohmann::json summary = {
+      {"status", record.failure.is_null() ? "completed" : "failed"},
+      {"failure", record.failure},
+      {"scene_file", sim.scene().sourcePath},
+      {"backend", backendName()},
+      {"threads", backend::threadCount()},
+      {"calibration", calibrationJson(sim.calibration())},
+      {"simulated_time", sim.time()},
+      {"steps", sim.stepCount()},
+      {"frames", output.framesWritten()},
+      {"format", formatName(sim.scene().output.format)},
+      {"wall_seconds", record.wallSeconds},
+      {"ms_per_step", steps > 0 ? 1000.0 * record.wallSeconds / steps : 0.0},
+      {"real_time_factor", record.wallSeconds > 0 ? sim.time() / record.wallSeconds : 0.0},
+      {"removed_count", sim.removedCount()},
+      {"final", statsJson(sim.stats())},
+      {"scene", io::sceneToJson(sim.scene())}};
+  io::writeFileAtomically(output.dir() / "summary.json",
+                          [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+}
+
+}  // namespace
+
+int runCommand(const RunOptions& options) {
+  if (!checkBackend(options.backend)) return kExitBadInput;
+  backend::setThreadCount(options.threads);
+  const Scene scene = io::loadScene(options.scene, options.overrides);
+  const std::string dir = options.out.empty() ? "out/" + scene.name : options.out;
+  Simulation sim(scene);
+  RunOutput output(dir, scene.output.format, options.force);
+  if (!options.quiet) {
+    printCalibration(stdout, sim);
+    std::printf("  backend              %s, %d threads\n", backendName(), backend::threadCount());
+    std::printf("writing %s frames at %g per second to %s\n", formatName(scene.output.format),
+                scene.output.fps, output.dir().c_str());
+    std::fflush(stdout);
+  }
+
+  const double endTime = scene.time.duration;
+  const double framePeriod = 1.0 / scene.output.fps;
+  const auto start = Clock::now();
+  RunRecord record;
+  Progress progress(endTime, !options.quiet);
+  auto lastFrameWall = Clock::now();
+  std::uint64_t lastFrameSteps = 0;
+  auto writeFrame = [&] {
+    FrameStats stats = sim.stats();
+    const std::uint64_t steps = sim.stepCount() - lastFrameSteps;
+    stats.wallMsPerStep = steps ? 1000.0 * secondsSince(lastFrameWall) / double(steps) : 0.0;
+    output.writeFrame(sim.frame(false), stats);
+    lastFrameWall = Clock::now();
+    lastFrameSteps = sim.stepCount();
+  };
+
+  output.writeBoundary(sim.boundaryFrame());
+  try {
+    writeFrame();
+    for (int frame = 1; sim.time() < endTime; ++frame) {
+      const double frameTime = std::min(frame * framePeriod, endTime);
+      while (sim.time() < frameTime) {
+        sim.step(frameTime);
+        progress.update(sim.time(), sim.stepCount());
+      }
+      writeFrame();
+    }
+  } catch (const SimulationFailure& failure) {
+    progress.finish(sim.time(), sim.stepCount());
+    record.wallSeconds = secondsSince(start);
+    record.failure = {{"message", failure.what()},
+                      {"step", failure.step()},
+                      {"particle", failure.particleId()},
+                      {"quantity", failure.quantity()}};
+    writeSummary(output, sim, record);
+    std::fprintf(stderr, "error: %s\nthe frames and stats up to t = %g s are in %s\n",
+                 failure.what(), sim.time(), output.dir().c_str());
+    return kExitSimulationFailed;
+  }
+  progress.finish(sim.time(), sim.stepCount());
+  record.wallSeconds = secondsSince(start);
+  writeSummary(output, sim, record);
+  if (!options.quiet) {
+    const FrameStats last = sim.stats();
+    std::printf("done: %llu steps, %.3f ms per step, %d frames; %llu fluid particles left, "
+                "%llu removed\n",
+                static_cast<unsigned long long>(sim.stepCount()),
+                1000.0 * record.wallSeconds / double(std::max<std::uint64_t>(sim.stepCount(), 1)),
+                output.framesWritten(), static_cast<unsigned long long>(last.fluidCount),
+                static_cast<unsigned long long>(last.removedCount));
+    std::printf("open %s/frames.pvd (and the walls, %s/boundary.vtp) in ParaView; statistics "
+                "in %s/stats.csv\n",
+                output.dir().c_str(), output.dir().c_str(), output.dir().c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace sph::cli

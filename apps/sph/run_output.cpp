@@ -1,0 +1,59 @@
+#include "run_output.hpp"
+
+#include <cstdio>
+
+#include "io/frame_writer.hpp"
+#include "sph/error.hpp"
+
+namespace sph::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The files a run writes; --force removes these and nothing else.
+const char* const kRunFiles[] = {"frames",        "frames.pvd",   "stats.csv",   "summary.json",
+                                 "boundary.vtp", "boundary.ply", "boundary.csv"};
+
+bool holdsEarlierRun(const fs::path& dir) {
+  for (const char* name : kRunFiles)
+    if (fs::exists(dir / name)) return true;
+  return false;
+}
+
+}  // namespace
+
+RunOutput::RunOutput(fs::path dir, FrameFormat format, bool force)
+    : dir_(std::move(dir)), format_(format) {
+  if (holdsEarlierRun(dir_)) {
+    if (!force)
+      throw InputError(dir_.string() +
+                       ": holds an earlier run; pass --force to overwrite it or choose another "
+                       "--out directory");
+    for (const char* name : kRunFiles) fs::remove_all(dir_ / name);
+  }
+  std::error_code error;
+  fs::create_directories(dir_ / "frames", error);
+  if (error)
+    throw InputError(dir_.string() + ": cannot create the output directory: " + error.message());
+  stats_.emplace(dir_ / "stats.csv");
+  if (format_ == FrameFormat::Vtp) series_.emplace(dir_ / "frames.pvd");
+}
+
+void RunOutput::writeBoundary(const ParticleFrame& walls) {
+  if (format_ == FrameFormat::None || walls.size() == 0) return;
+  io::writeFrame(walls, format_, dir_ / (std::string("boundary.") + io::frameExtension(format_)));
+}
+
+void RunOutput::writeFrame(const ParticleFrame& frame, const FrameStats& stats) {
+  if (format_ != FrameFormat::None) {
+    char name[64];
+    std::snprintf(name, sizeof name, "frame_%05d.%s", frames_, io::frameExtension(format_));
+    io::writeFrame(frame, format_, dir_ / "frames" / name);
+    if (series_) series_->add(frame.time, std::string("frames/") + name);
+  }
+  stats_->append(stats);
+  ++frames_;
+}
+
+}  // namespace sph::cli

@@ -1,0 +1,53 @@
+// With gravity off and no walls, only pair forces act: total linear momentum is constant.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scene_builders.hpp"
+#include "sph/simulation.hpp"
+
+namespace sph {
+namespace {
+
+struct Momentum {
+  double p[3] = {0, 0, 0};
+  double magnitudeSum = 0;  // Σ m|v|, the scale rounding errors are measured against
+};
+
+Momentum momentumOf(const Simulation& sim) {
+  const ParticleFrame f = sim.frame(false);
+  const double m = sim.calibration().mass;
+  Momentum out;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    double speed2 = 0;
+    for (int a = 0; a < 3; ++a) {
+      out.p[a] += m * f.velocity[3 * i + a];
+      speed2 += double(f.velocity[3 * i + a]) * f.velocity[3 * i + a];
+    }
+    out.magnitudeSum += m * std::sqrt(speed2);
+  }
+  return out;
+}
+
+class MomentumConservation : public ::testing::TestWithParam<PressureForm> {};
+
+TEST_P(MomentumConservation, ConstantOverAThousandSteps) {
+  Simulation sim(testing::collidingBlocks(GetParam()));
+  const Momentum before = momentumOf(sim);
+  const double maxKinetic0 = sim.stats().kineticEnergy;
+  for (int i = 0; i < 1000; ++i) sim.step();
+  const Momentum after = momentumOf(sim);
+  // The blocks did collide: kinetic energy went into pressure and viscosity.
+  EXPECT_LT(sim.stats().kineticEnergy, 0.9 * maxKinetic0);
+  EXPECT_EQ(sim.fluidCount(), sim.calibration().fluidParticles);
+  for (int a = 0; a < 3; ++a) {
+    // Float rounding only: a millionth of the momentum in play per axis.
+    EXPECT_NEAR(after.p[a], before.p[a], 1e-6 * before.magnitudeSum) << "axis " << a;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(PressureForms, MomentumConservation,
+                         ::testing::Values(PressureForm::Symmetric, PressureForm::Paper));
+
+}  // namespace
+}  // namespace sph
