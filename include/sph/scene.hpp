@@ -21,10 +21,13 @@ struct AxisBox {
   Vec3d max{0, 0, 0};
 };
 
-// A block of fluid sampled on a cubic lattice of the fluid spacing.
+// A block of fluid sampled on a cubic lattice of the fluid spacing. A hydrostatic block starts
+// compressed as it would rest under gravity, so a tank starts at rest instead of dropping into
+// its own compression and ringing.
 struct FluidBlock {
   AxisBox box;
   Vec3d velocity{0, 0, 0};
+  bool hydrostatic = false;
 };
 
 // A tank whose inner faces are `box`, built from `layers` layers of boundary particles

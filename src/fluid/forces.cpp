@@ -63,7 +63,8 @@ void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles&
         const float volumeB = wall[b].w;
         const float massB = p.restDensity * volumeB;
         const Vec3 gradW = rib * kernels.gradFactor(r);
-        a += boundaryPressureAcceleration(massB, pI, rhoI, gradW);
+        const float pB = wallPressure(pI, rhoI, p.gravity, -rib, p.clampNegativePressure);
+        a += boundaryPressureAcceleration(massB, pI, rhoI, pB, gradW);
         if (p.wallFriction > 0.0f) {
           const Vec3 friction =
               artificial ? artificialViscosityAcceleration(p.viscosity, p.soundSpeed, p.h, massB,

@@ -34,7 +34,7 @@ struct FluidParticles {
 struct BoundaryParticles {
   std::size_t count = 0;
   GridSpec grid;                    // covers the walls with a cell to spare
-  Buffer<Vec4> position;        // xyz; w = volume ψ_b = 1 / Σ_k W_bk, m³
+  Buffer<Vec4> position;        // xyz; w = volume ψ_b, m³
   Buffer<std::uint32_t> id;     // stable particle id
   Buffer<std::uint32_t> cellStart;  // cellCount + 1
 };

@@ -2,8 +2,6 @@
 #include <vector>
 
 #include "backend/cpu_parallel.hpp"
-#include "fluid/kernel_dispatch.hpp"
-#include "fluid/neighbors.hpp"
 #include "fluid/stages.hpp"
 
 namespace sph::fluid {
@@ -33,23 +31,13 @@ void prepareBoundary(BoundaryParticles& boundary, const FluidParameters& params)
   boundary.position.swap(position);
   boundary.id.swap(id);
 
-  // Akinci et al. 2012 eq. 4: ψ_b = 1 / Σ_k W_bk over wall neighbours, so a dense or a sparse
-  // wall contributes the same density.
-  withKernels(params, [&](auto kernels) {
-    const std::uint32_t* cellStart = boundary.cellStart.data();
-    Vec4* wall = boundary.position.data();
-    std::vector<float> volume(n);
-    float* out = volume.data();
-    backend::forEach(n, [=](std::size_t b) {
-      const Vec3 xb = xyz(wall[b]);
-      float sum = 0.0f;
-      forEachNeighbor(grid, cellStart, xb, [&](std::uint32_t k) {
-        sum += kernels.W(lengthSquared(xb - xyz(wall[k])));
-      });
-      out[b] = 1.0f / sum;
-    });
-    for (std::size_t b = 0; b < n; ++b) wall[b].w = volume[b];
-  });
+  // Walls are sampled on the fluid's lattice, so each wall particle stands for one lattice
+  // cell: ψ_b = m / ρ0, and a fluid particle at rest against a wall reads exactly ρ0. Akinci's
+  // ψ_b = 1 / Σ_k W_bk (eq. 4) counts only wall neighbours, so at the wall's surface it
+  // overestimates the volume: +4.5 % density next to a two-layer wall at h = 2d, which the
+  // stiffness of a weakly compressible fluid turns into a pressure many times ρ g H.
+  const float volume = params.mass / params.restDensity;
+  for (std::size_t b = 0; b < n; ++b) boundary.position[b].w = volume;
 }
 
 }  // namespace sph::fluid

@@ -13,8 +13,8 @@ namespace sph::fluid {
 // Particles outside the domain are clamped back or removed; returns how many were removed.
 std::size_t buildGrid(FluidParticles& fluid, Grid& grid, const DomainParameters& domain);
 
-// Builds the walls' grid, sorts the wall particles by cell and computes each one's volume ψ_b
-// (Akinci et al. 2012, eq. 4). Once, at set-up.
+// Builds the walls' grid, sorts the wall particles by cell and sets each one's volume ψ_b.
+// Once, at set-up.
 void prepareBoundary(BoundaryParticles& boundary, const FluidParameters& params);
 
 // Reads position, boundary. Writes density and pressure (seed 1 Algorithm 1).

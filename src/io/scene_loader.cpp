@@ -55,6 +55,7 @@ FluidDesc readFluid(const ObjectReader& in) {
     FluidBlock block;
     block.box = readBox(blockIn);
     block.velocity = blockIn.vec3("velocity", block.velocity);
+    block.hydrostatic = blockIn.boolean("hydrostatic", block.hydrostatic);
     fluid.blocks.push_back(block);
   }
   return fluid;

@@ -35,7 +35,7 @@ KeySchema buildSchema() {
                    value("eos"), value("clamp_negative_pressure"), value("pressure_form"),
                    object("viscosity", {value("model"), value("value"), value("wall_friction")}),
                    object("surface_tension", {value("coefficient"), value("threshold")}),
-                   arrayOf("blocks", {vec3("min"), vec3("max"), vec3("velocity")})}),
+                   arrayOf("blocks", {vec3("min"), vec3("max"), vec3("velocity"), value("hydrostatic")})}),
            arrayOf("walls",
                    {value("type"), vec3("min"), vec3("max"), value("layers"), value("closed")}),
            object("calibration", {value("mass"), value("max_expected_speed"),

@@ -36,6 +36,7 @@ json fluidToJson(const FluidDesc& fluid) {
   for (const FluidBlock& block : fluid.blocks) {
     json b = boxToJson(block.box);
     b["velocity"] = toJson(block.velocity);
+    b["hydrostatic"] = block.hydrostatic;
     blocks.push_back(std::move(b));
   }
   return {

@@ -52,6 +52,22 @@ std::vector<Vec3> sampleTank(const WallTank& tank, double spacing, const Vec3d& 
   return points;
 }
 
+void compressHydrostatically(std::vector<Vec3>& points, const AxisBox& block,
+                             const Vec3d& gravity, double soundSpeed) {
+  const int up = upAxisOf(gravity);
+  const double g = std::abs(gravity[up]);
+  if (g == 0.0 || soundSpeed <= 0.0) return;
+  const bool upIsPositive = gravity[up] <= 0.0;
+  const double top = upIsPositive ? block.max[up] : block.min[up];
+  const double c2 = soundSpeed * soundSpeed;
+  for (Vec3& p : points) {
+    float* coordinate = up == 0 ? &p.x : (up == 1 ? &p.y : &p.z);
+    const double depth = std::abs(top - double(*coordinate));
+    const double compressed = c2 / g * std::log1p(g * depth / c2);
+    *coordinate = static_cast<float>(upIsPositive ? top - compressed : top + compressed);
+  }
+}
+
 int upAxisOf(const Vec3d& gravity) {
   int axis = 1;
   double largest = 0.0;

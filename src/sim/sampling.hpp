@@ -16,6 +16,13 @@ std::vector<Vec3> sampleBlock(const AxisBox& box, double spacing);
 // fluid, open on the side gravity points away from unless closed.
 std::vector<Vec3> sampleTank(const WallTank& tank, double spacing, const Vec3d& gravity);
 
+// Moves the points of a block resting under gravity to the compression of hydrostatic
+// equilibrium: at depth z below the block's top the density is ρ0 (1 + g z / c0²) to first
+// order for every equation of state, so a column of lattice spacing d shortens to
+// z' = (c0²/g) ln(1 + g z / c0²).
+void compressHydrostatically(std::vector<Vec3>& points, const AxisBox& block,
+                             const Vec3d& gravity, double soundSpeed);
+
 // The axis gravity acts along (y when there is none).
 int upAxisOf(const Vec3d& gravity);
 

@@ -52,7 +52,9 @@ struct Simulation::Impl {
 
     std::vector<Vec3> fluidPoints, fluidVelocities;
     for (const auto& block : scene.fluid.blocks) {
-      const auto points = sim::sampleBlock(block.box, scene.fluid.spacing);
+      auto points = sim::sampleBlock(block.box, scene.fluid.spacing);
+      if (block.hydrostatic)
+        sim::compressHydrostatically(points, block.box, scene.gravity, calibration.soundSpeed);
       const Vec3 v{float(block.velocity[0]), float(block.velocity[1]), float(block.velocity[2])};
       fluidPoints.insert(fluidPoints.end(), points.begin(), points.end());
       fluidVelocities.insert(fluidVelocities.end(), points.size(), v);

@@ -59,8 +59,21 @@ TEST(Momentum, ViscositiesAreAntisymmetricAndDamp) {
 
 TEST(Momentum, BoundaryPressurePushesAwayFromWall) {
   const Vec3 rib{0.0f, 0.008f, 0.0f};  // fluid above the wall particle
-  const Vec3 a = boundaryPressureAcceleration(0.008f, 500.0f, 1000.0f, gradW(rib));
+  const Vec3 a = boundaryPressureAcceleration(0.008f, 500.0f, 1000.0f, 500.0f, gradW(rib));
   EXPECT_GT(a.y, 0.0f);
+  // A mirror particle at the same pressure pushes exactly as a fluid neighbour would.
+  const Vec3 fluid = pressureAccelerationSymmetric(0.008f, 500.0f, 1000.0f, 500.0f, 1000.0f,
+                                                   gradW(rib));
+  EXPECT_FLOAT_EQ(a.y, fluid.y);
+}
+
+TEST(Momentum, WallPressureGrowsWithDepth) {
+  const Vec3 g{0.0f, -9.81f, 0.0f};
+  // A wall particle 1 cm below the fluid particle sits under 1 cm more water.
+  EXPECT_NEAR(wallPressure(200.0f, 1000.0f, g, Vec3{0.0f, -0.01f, 0.0f}, true), 298.1f, 1e-3f);
+  EXPECT_NEAR(wallPressure(200.0f, 1000.0f, g, Vec3{0.01f, 0.0f, 0.0f}, true), 200.0f, 1e-4f);
+  EXPECT_EQ(wallPressure(50.0f, 1000.0f, g, Vec3{0.0f, 0.01f, 0.0f}, true), 0.0f);
+  EXPECT_LT(wallPressure(50.0f, 1000.0f, g, Vec3{0.0f, 0.01f, 0.0f}, false), 0.0f);
 }
 
 }  // namespace

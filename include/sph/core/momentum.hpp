@@ -21,11 +21,22 @@ SPH_HD Vec3 pressureAccelerationPaper(float massJ, float pressureI, float densit
   return gradW * (-massJ * s);
 }
 
-// Akinci et al. 2012, eq. 10: a boundary particle of volume ψ_b acts with mass ρ0 ψ_b and
-// mirrors the fluid particle's pressure.
+// A wall particle acts as a mirror of the fluid particle (Akinci et al. 2012: mass ρ0 ψ_b,
+// density ρ_i) in the symmetric form, at the pressure the fluid would have at the wall
+// particle (`wallPressure`, see below). Akinci's eq. 10 keeps only the p_i/ρ_i² half with
+// p_b = p_i; that wall is half as stiff, and gives no vertical pressure gradient beside a side
+// wall, so a narrow tank's pressure runs 25 % above ρ g h.
 SPH_HD Vec3 boundaryPressureAcceleration(float boundaryMass, float pressureI, float densityI,
-                                         Vec3 gradW) {
-  return gradW * (-boundaryMass * pressureI / (densityI * densityI));
+                                         float wallPressure, Vec3 gradW) {
+  return gradW * (-boundaryMass * (pressureI + wallPressure) / (densityI * densityI));
+}
+
+// The fluid's pressure extrapolated hydrostatically from particle i to wall particle b
+// (Adami et al. 2012, eq. 27, one neighbour): p_b = p_i + ρ_i g·(x_b - x_i).
+SPH_HD float wallPressure(float pressureI, float densityI, Vec3 gravity, Vec3 xbMinusXi,
+                          bool clampNegative) {
+  const float p = pressureI + densityI * dot(gravity, xbMinusXi);
+  return (clampNegative && p < 0.0f) ? 0.0f : p;
 }
 
 // Seed 1 eq. 7 divided by ρ_i (Müller 2003): μ m_j (v_j - v_i) / (ρ_i ρ_j) ∇²W.

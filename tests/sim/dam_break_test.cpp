@@ -1,0 +1,85 @@
+// The dam break against Martin & Moyce (1952), square column: the surge front position Z(T)
+// follows the experiment before the front reaches the far wall.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "sph/simulation.hpp"
+
+namespace sph {
+namespace {
+
+struct FrontPoint {
+  double T, Z;
+};
+
+std::vector<FrontPoint> readMartinMoyce() {
+  std::ifstream in(std::string(SPH_SOURCE_DIR) + "/tests/data/martin_moyce_1952_square_front.csv");
+  std::vector<FrontPoint> points;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == 'T') continue;
+    std::istringstream fields(line);
+    FrontPoint p;
+    char comma;
+    if (fields >> p.T >> comma >> p.Z) points.push_back(p);
+  }
+  return points;
+}
+
+// A column a = 0.1 m of 20 × 20 particles, 10 deep, in a tank 5.5 a long with 2 wall layers.
+Scene damBreak(double a) {
+  const double d = a / 20.0;
+  Scene s;
+  s.name = "dam_break_test";
+  s.sourcePath = "dam_break (test)";
+  s.fluid.spacing = d;
+  s.fluid.viscosity = 0.02;  // as scenes/dam_break.json
+  s.fluid.wallFriction = 1.0;
+  s.domain.box = {{-0.05, -0.05, -0.05}, {5.5 * a + 0.05, 2.0 * a, 0.5 * a + 0.05}};
+  // Released from the lattice at rest, without hydrostatic pre-compression: the pressure builds
+  // within a few acoustic times (H / c0 = 7 ms), about as the experiment's gate opened. Started
+  // hydrostatic, the front leads the T = 0.62 point by 11 % and the others by at most 8 %.
+  s.fluid.blocks.push_back({{{0, 0, 0}, {a, a, 0.5 * a}}, {0, 0, 0}, false});
+  s.walls.push_back({{{0, 0, 0}, {5.5 * a, 1.5 * a, 0.5 * a}}, 2, false});
+  return s;
+}
+
+double frontPosition(const Simulation& sim) {
+  const ParticleFrame f = sim.frame(false);
+  double front = 0.0;
+  for (std::size_t i = 0; i < f.size(); ++i) front = std::max(front, double(f.position[3 * i]));
+  return front + 0.5 * sim.calibration().spacing;  // the particle's extent, not its centre
+}
+
+TEST(DamBreak, SurgeFrontFollowsMartinAndMoyce) {
+  const auto experiment = readMartinMoyce();
+  ASSERT_GE(experiment.size(), 15u) << "test data missing";
+  const double a = 0.1, g = 9.81;
+  Simulation sim(damBreak(a));
+  double sumError = 0.0;
+  int compared = 0;
+  for (const FrontPoint& p : experiment) {
+    if (p.T > 3.0) break;
+    sim.advanceTo(p.T * std::sqrt(a / g));
+    const double Z = frontPosition(sim) / a;
+    const double error = (Z - p.Z) / p.Z;
+    // Stated tolerance: 10 % in Z for 0.8 ≤ T ≤ 3 (the far wall is at Z = 5.5); 12 % for the two
+    // points before, while the experiment's gate was still opening (measured: +6 % and +10.5 %).
+    const double tolerance = p.T < 0.8 ? 0.12 : 0.10;
+    EXPECT_LT(std::abs(error), tolerance)
+        << "T = " << p.T << ": Z = " << Z << ", experiment " << p.Z;
+    sumError += std::abs(error);
+    ++compared;
+  }
+  EXPECT_GE(compared, 15);
+  EXPECT_LT(sumError / compared, 0.05) << "mean relative error in Z";
+  EXPECT_EQ(sim.fluidCount(), sim.calibration().fluidParticles) << "no particle may leave";
+}
+
+}  // namespace
+}  // namespace sph
