@@ -7,8 +7,6 @@ namespace sph::fluid {
 
 namespace {
 
-SPH_HD float clampFloat(float v, float lo, float hi) { return v < lo ? lo : (v > hi ? hi : v); }
-
 SPH_HD bool insideDomain(const DomainParameters& d, Vec3 p) {
   // Written so that NaN compares as outside.
   return p.x >= d.min.x && p.x <= d.max.x && p.y >= d.min.y && p.y <= d.max.y &&
@@ -33,28 +31,7 @@ SPH_HD Bounds merge(const Bounds& a, const Bounds& b) {
 std::size_t buildGrid(FluidParticles& fluid, Grid& grid, const DomainParameters& domain) {
   const std::size_t n = fluid.count;
   Vec4* position = fluid.position.data();
-  Vec4* velocity = fluid.velocity.data();
   std::uint32_t* cell = fluid.cell.data();
-
-  if (domain.clampOutside) {
-    backend::forEach(n, SPH_LAMBDA(std::size_t i) {
-      Vec3 p = xyz(position[i]);
-      if (insideDomain(domain, p) || !isFinite(p)) return;
-      // Put it back on the face it crossed and stop it moving further out.
-      Vec3 v = xyz(velocity[i]);
-      if (p.x < domain.min.x && v.x < 0.0f) v.x = 0.0f;
-      if (p.x > domain.max.x && v.x > 0.0f) v.x = 0.0f;
-      if (p.y < domain.min.y && v.y < 0.0f) v.y = 0.0f;
-      if (p.y > domain.max.y && v.y > 0.0f) v.y = 0.0f;
-      if (p.z < domain.min.z && v.z < 0.0f) v.z = 0.0f;
-      if (p.z > domain.max.z && v.z > 0.0f) v.z = 0.0f;
-      p = Vec3{clampFloat(p.x, domain.min.x, domain.max.x),
-               clampFloat(p.y, domain.min.y, domain.max.y),
-               clampFloat(p.z, domain.min.z, domain.max.z)};
-      position[i] = makeVec4(p);
-      velocity[i] = makeVec4(v);
-    });
-  }
 
   const Bounds bounds = backend::reduce(
       n, Bounds{Vec3{0, 0, 0}, Vec3{0, 0, 0}, false},

@@ -17,6 +17,17 @@ SPH_HD void reflect(float& x, float& v, float lo, float hi, float damping) {
   }
 }
 
+// The scene's "clamp" policy: a particle past a face is put back on it and stops moving out.
+SPH_HD void clamp(float& x, float& v, float lo, float hi) {
+  if (x < lo) {
+    x = lo;
+    if (v < 0.0f) v = 0.0f;
+  } else if (x > hi) {
+    x = hi;
+    if (v > 0.0f) v = 0.0f;
+  }
+}
+
 }  // namespace
 
 void integrate(FluidParticles& fluid, float dt, const DomainParameters& domain) {
@@ -32,6 +43,10 @@ void integrate(FluidParticles& fluid, float dt, const DomainParameters& domain) 
       reflect(x.x, v.x, d.min.x, d.max.x, d.damping);
       reflect(x.y, v.y, d.min.y, d.max.y, d.damping);
       reflect(x.z, v.z, d.min.z, d.max.z, d.damping);
+    } else if (d.clampOutside) {
+      clamp(x.x, v.x, d.min.x, d.max.x);
+      clamp(x.y, v.y, d.min.y, d.max.y);
+      clamp(x.z, v.z, d.min.z, d.max.z);
     }
     velocity[i] = makeVec4(v);
     position[i] = makeVec4(x);

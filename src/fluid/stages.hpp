@@ -10,7 +10,7 @@
 namespace sph::fluid {
 
 // Reads position, velocity, id. Writes them reordered by cell, grid.cellStart, count.
-// Particles outside the domain are clamped back or removed; returns how many were removed.
+// Particles outside the domain are removed; returns how many.
 std::size_t buildGrid(FluidParticles& fluid, Grid& grid, const DomainParameters& domain);
 
 // Builds the walls' grid, sorts the wall particles by cell and sets each one's volume ψ_b.
@@ -46,7 +46,8 @@ struct BadParticle {
 BadParticle findBadParticle(const FluidParticles& fluid, float restDensity,
                             float maxDensityError);
 
-// Symplectic Euler: v += dt a, then x += dt v; the seed's damped box if enabled.
+// Symplectic Euler: v += dt a, then x += dt v; then the seed's damped box, or the clamp
+// policy, keeps particles in the domain.
 void integrate(FluidParticles& fluid, float dt, const DomainParameters& domain);
 
 }  // namespace sph::fluid

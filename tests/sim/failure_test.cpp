@@ -1,0 +1,47 @@
+// A blow-up stops the run with the step, the particle and the quantity, and keeps the last
+// good state.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "scene_builders.hpp"
+#include "sph/error.hpp"
+#include "sph/simulation.hpp"
+
+namespace sph {
+namespace {
+
+TEST(Failure, BlowUpNamesStepParticleAndQuantity) {
+  Scene scene = testing::restingTank(0.01, 0.1, 0.1);
+  scene.time.fixedDt = 0.004;  // ten times the CFL limit
+  Simulation sim(scene);
+  bool failed = false;
+  try {
+    for (int i = 0; i < 500; ++i) sim.step();
+  } catch (const SimulationFailure& failure) {
+    failed = true;
+    const std::string message = failure.what();
+    EXPECT_NE(message.find("step " + std::to_string(failure.step())), std::string::npos);
+    EXPECT_NE(message.find("particle " + std::to_string(failure.particleId())), std::string::npos);
+    EXPECT_NE(message.find(failure.quantity()), std::string::npos);
+    EXPECT_LT(failure.particleId(), sim.calibration().fluidParticles);
+    EXPECT_EQ(failure.step(), sim.stepCount());
+  }
+  ASSERT_TRUE(failed) << "an unstable time step must be detected";
+  // The state is the last good one: finite everywhere.
+  const ParticleFrame f = sim.frame(false);
+  for (float x : f.position) ASSERT_TRUE(std::isfinite(x));
+  for (float v : f.velocity) ASSERT_TRUE(std::isfinite(v));
+}
+
+TEST(Failure, UnderivableSoundSpeedIsAnInputError) {
+  Scene scene = testing::collidingBlocks(PressureForm::Symmetric);
+  for (auto& block : scene.fluid.blocks) block.velocity = {0, 0, 0};
+  EXPECT_THROW(Simulation{scene}, InputError);
+  scene.calibration.speedOfSound = 10.0;
+  EXPECT_NO_THROW(Simulation{scene});
+}
+
+}  // namespace
+}  // namespace sph
