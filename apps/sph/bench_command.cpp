@@ -41,9 +41,10 @@ struct StageSamples {
 int benchCommand(const BenchOptions& options) {
   if (!checkBackend(options.backend)) return kExitBadInput;
   backend::setThreadCount(options.threads);
-  std::printf("sph bench: box drop, backend %s, %d threads, %d warm-up + %d timed steps; "
-              "median ms per step\n",
-              backendName(), backend::threadCount(), options.warmupSteps, options.steps);
+  std::printf(
+      "sph bench: box drop, backend %s, %d threads, %d warm-up + %d timed steps; "
+      "median ms per step\n",
+      backendName(), backend::threadCount(), options.warmupSteps, options.steps);
   std::printf("%10s %9s %9s %9s %9s %9s %9s %14s\n", "particles", "step", "grid", "density",
               "forces", "dt", "integrate", "particle-steps/s");
   nlohmann::json results = nlohmann::json::array();

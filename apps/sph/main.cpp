@@ -25,8 +25,7 @@ int main(int argc, char** argv) {
   runCmd->add_option("--fps", fps, "Output frames per simulated second (output.fps)");
   runCmd->add_option("--format", format, "Frame format: vtp, ply, csv or none (output.format)")
       ->check(CLI::IsMember({"vtp", "ply", "csv", "none"}));
-  runCmd->add_option("--set", run.overrides, "Override a scene key: dotted.key=value")
-      ->take_all();
+  runCmd->add_option("--set", run.overrides, "Override a scene key: dotted.key=value")->take_all();
   runCmd->add_flag("--force", run.force, "Overwrite an earlier run in the output directory");
   runCmd->add_flag("--quiet", run.quiet, "No progress output");
 

@@ -14,7 +14,8 @@ std::string formatSeconds(double s) {
   if (s < 60.0) {
     std::snprintf(text, sizeof text, "%.0fs", s);
   } else {
-    std::snprintf(text, sizeof text, "%dm%02ds", static_cast<int>(s / 60), static_cast<int>(s) % 60);
+    std::snprintf(text, sizeof text, "%dm%02ds", static_cast<int>(s / 60),
+                  static_cast<int>(s) % 60);
   }
   return text;
 }
@@ -22,8 +23,11 @@ std::string formatSeconds(double s) {
 }  // namespace
 
 Progress::Progress(double endTime, bool enabled)
-    : endTime_(endTime), enabled_(enabled), terminal_(isatty(STDERR_FILENO) != 0),
-      start_(std::chrono::steady_clock::now()), lastPrint_(start_) {}
+    : endTime_(endTime),
+      enabled_(enabled),
+      terminal_(isatty(STDERR_FILENO) != 0),
+      start_(std::chrono::steady_clock::now()),
+      lastPrint_(start_) {}
 
 void Progress::update(double simTime, std::uint64_t steps) {
   if (!enabled_) return;
@@ -45,8 +49,8 @@ void Progress::print(double simTime, std::uint64_t steps, bool final) {
   const double stepsPerSecond = elapsed > 0.0 ? double(steps) / elapsed : 0.0;
   const double left = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
   char line[256];
-  std::snprintf(line, sizeof line, "t = %.4g / %.4g s, %llu steps, %.0f steps/s, %s %s",
-                simTime, endTime_, static_cast<unsigned long long>(steps), stepsPerSecond,
+  std::snprintf(line, sizeof line, "t = %.4g / %.4g s, %llu steps, %.0f steps/s, %s %s", simTime,
+                endTime_, static_cast<unsigned long long>(steps), stepsPerSecond,
                 final ? "took" : "left", formatSeconds(final ? elapsed : left).c_str());
   if (terminal_) {
     const int width = 30;

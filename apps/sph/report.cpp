@@ -6,7 +6,9 @@ namespace sph::cli {
 
 namespace {
 
-const char* origin(bool fromScene) { return fromScene ? "set by scene" : "derived"; }
+const char* origin(bool fromScene) {
+  return fromScene ? "set by scene" : "derived";
+}
 
 const char* eosStiffnessName(EquationOfState eos) {
   switch (eos) {
@@ -74,7 +76,9 @@ nlohmann::json statsJson(const FrameStats& s) {
           {"wall_ms_per_step", s.wallMsPerStep}};
 }
 
-const char* backendName() { return "cpu"; }
+const char* backendName() {
+  return "cpu";
+}
 
 const char* formatName(FrameFormat format) {
   switch (format) {

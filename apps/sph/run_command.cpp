@@ -114,15 +114,17 @@ int runCommand(const RunOptions& options) {
   writeSummary(output, sim, record);
   if (!options.quiet) {
     const FrameStats last = sim.stats();
-    std::printf("done: %llu steps, %.3f ms per step, %d frames; %llu fluid particles left, "
-                "%llu removed\n",
-                static_cast<unsigned long long>(sim.stepCount()),
-                1000.0 * record.wallSeconds / double(std::max<std::uint64_t>(sim.stepCount(), 1)),
-                output.framesWritten(), static_cast<unsigned long long>(last.fluidCount),
-                static_cast<unsigned long long>(last.removedCount));
-    std::printf("open %s/frames.pvd (and the walls, %s/boundary.vtp) in ParaView; statistics "
-                "in %s/stats.csv\n",
-                output.dir().c_str(), output.dir().c_str(), output.dir().c_str());
+    std::printf(
+        "done: %llu steps, %.3f ms per step, %d frames; %llu fluid particles left, "
+        "%llu removed\n",
+        static_cast<unsigned long long>(sim.stepCount()),
+        1000.0 * record.wallSeconds / double(std::max<std::uint64_t>(sim.stepCount(), 1)),
+        output.framesWritten(), static_cast<unsigned long long>(last.fluidCount),
+        static_cast<unsigned long long>(last.removedCount));
+    std::printf(
+        "open %s/frames.pvd (and the walls, %s/boundary.vtp) in ParaView; statistics "
+        "in %s/stats.csv\n",
+        output.dir().c_str(), output.dir().c_str(), output.dir().c_str());
   }
   return kExitOk;
 }

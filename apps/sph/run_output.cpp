@@ -12,7 +12,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // The files a run writes; --force removes these and nothing else.
-const char* const kRunFiles[] = {"frames",        "frames.pvd",   "stats.csv",   "summary.json",
+const char* const kRunFiles[] = {"frames",       "frames.pvd",   "stats.csv",   "summary.json",
                                  "boundary.vtp", "boundary.ply", "boundary.csv"};
 
 bool holdsEarlierRun(const fs::path& dir) {

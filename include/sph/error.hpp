@@ -19,7 +19,9 @@ class SimulationFailure : public std::runtime_error {
  public:
   SimulationFailure(const std::string& message, std::uint64_t step, std::uint32_t particleId,
                     std::string quantity)
-      : std::runtime_error(message), step_(step), particleId_(particleId),
+      : std::runtime_error(message),
+        step_(step),
+        particleId_(particleId),
         quantity_(std::move(quantity)) {}
   std::uint64_t step() const { return step_; }
   std::uint32_t particleId() const { return particleId_; }

@@ -46,18 +46,18 @@ struct DomainDesc {
 };
 
 struct FluidDesc {
-  double restDensity = 1000.0;       // kg/m³
-  double spacing = 0.01;             // lattice spacing d, m
-  double supportRatio = 2.0;         // h / d
+  double restDensity = 1000.0;  // kg/m³
+  double spacing = 0.01;        // lattice spacing d, m
+  double supportRatio = 2.0;    // h / d
   KernelKind kernel = KernelKind::Muller;
   EquationOfState eos = EquationOfState::Linear;
   bool clampNegativePressure = true;
   PressureForm pressureForm = PressureForm::Symmetric;
   ViscosityModel viscosityModel = ViscosityModel::Artificial;
-  double viscosity = 0.0;            // μ (Pa·s) for Müller; α (dimensionless) for artificial
-  double wallFriction = 0.0;         // fraction of the fluid viscosity applied against walls
-  double surfaceTension = 0.0;       // σ (N/m); 0 disables
-  double surfaceThreshold = 7.065;   // |∇c| above which surface tension acts (seed 2)
+  double viscosity = 0.0;           // μ (Pa·s) for Müller; α (dimensionless) for artificial
+  double wallFriction = 0.0;        // fraction of the fluid viscosity applied against walls
+  double surfaceTension = 0.0;      // σ (N/m); 0 disables
+  double surfaceThreshold = 7.065;  // |∇c| above which surface tension acts (seed 2)
   std::vector<FluidBlock> blocks;
 };
 
@@ -70,10 +70,10 @@ struct CalibrationDesc {
 };
 
 struct TimeDesc {
-  double duration = 1.0;        // simulated seconds
-  double cfl = 0.4;             // dt ≤ cfl h / (c0 + vmax)
-  double forceFactor = 0.25;    // dt ≤ forceFactor sqrt(h / amax)
-  double viscousFactor = 0.125; // dt ≤ viscousFactor h² / ν
+  double duration = 1.0;         // simulated seconds
+  double cfl = 0.4;              // dt ≤ cfl h / (c0 + vmax)
+  double forceFactor = 0.25;     // dt ≤ forceFactor sqrt(h / amax)
+  double viscousFactor = 0.125;  // dt ≤ viscousFactor h² / ν
   double maxDt = 1e-2;
   std::optional<double> fixedDt;
 };

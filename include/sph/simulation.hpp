@@ -17,14 +17,14 @@ namespace sph {
 
 // The values a run uses, derived from the scene (seed 1 §8.1) unless the scene set them.
 struct Calibration {
-  double spacing = 0.0;          // d, m
-  double supportRadius = 0.0;    // h, m
-  double mass = 0.0;             // kg per fluid particle
-  double maxExpectedSpeed = 0.0; // m/s
-  double soundSpeed = 0.0;       // c0, m/s
-  double stiffness = 0.0;        // k or B of the equation of state
+  double spacing = 0.0;             // d, m
+  double supportRadius = 0.0;       // h, m
+  double mass = 0.0;                // kg per fluid particle
+  double maxExpectedSpeed = 0.0;    // m/s
+  double soundSpeed = 0.0;          // c0, m/s
+  double stiffness = 0.0;           // k or B of the equation of state
   double kinematicViscosity = 0.0;  // ν used by the viscous time step condition, m²/s
-  double initialDt = 0.0;        // s
+  double initialDt = 0.0;           // s
   bool massFromScene = false;
   bool maxExpectedSpeedFromScene = false;
   bool soundSpeedFromScene = false;

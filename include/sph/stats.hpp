@@ -6,9 +6,9 @@
 namespace sph {
 
 struct FrameStats {
-  double time = 0.0;             // s
-  std::uint64_t steps = 0;       // steps taken since the start
-  double dt = 0.0;               // last time step, s
+  double time = 0.0;        // s
+  std::uint64_t steps = 0;  // steps taken since the start
+  double dt = 0.0;          // last time step, s
   std::uint64_t fluidCount = 0;
   std::uint64_t boundaryCount = 0;
   double kineticEnergy = 0.0;    // J
@@ -18,7 +18,7 @@ struct FrameStats {
   std::uint64_t surfaceCount = 0;
   std::uint64_t leakedCount = 0;
   std::uint64_t removedCount = 0;
-  double wallMsPerStep = 0.0;    // mean over the steps since the previous row
+  double wallMsPerStep = 0.0;  // mean over the steps since the previous row
 };
 
 }  // namespace sph

@@ -52,7 +52,7 @@ void countingSort(const std::uint32_t* keys, std::size_t n, std::uint32_t binCou
     std::uint32_t* local = counts.data() + static_cast<std::size_t>(t) * bins;
     for (std::size_t i = chunkBegin(t, used); i < chunkBegin(t + 1, used); ++i) ++local[keys[i]];
 #pragma omp barrier
-    // Each bin's slots: all of thread 0's keys, then thread 1's, ... Bins split over threads.
+      // Each bin's slots: all of thread 0's keys, then thread 1's, ... Bins split over threads.
 #pragma omp for schedule(static)
     for (std::int64_t b = 0; b < static_cast<std::int64_t>(bins); ++b) {
       std::uint32_t total = 0;

@@ -9,8 +9,8 @@ namespace {
 
 SPH_HD bool insideDomain(const DomainParameters& d, Vec3 p) {
   // Written so that NaN compares as outside.
-  return p.x >= d.min.x && p.x <= d.max.x && p.y >= d.min.y && p.y <= d.max.y &&
-         p.z >= d.min.z && p.z <= d.max.z;
+  return p.x >= d.min.x && p.x <= d.max.x && p.y >= d.min.y && p.y <= d.max.y && p.z >= d.min.z &&
+         p.z <= d.max.z;
 }
 
 // The extent of the particles inside the domain; NaN positions count as outside.
@@ -45,11 +45,13 @@ std::size_t buildGrid(FluidParticles& fluid, Grid& grid, const DomainParameters&
   const GridSpec spec = grid.spec;
   const std::uint32_t outsideBin = spec.cellCount;
 
-  backend::forEach(n, SPH_LAMBDA(std::size_t i) {
-    const Vec3 p = xyz(position[i]);
-    cell[i] = insideDomain(domain, p) ? cellIndex(spec, clampToGrid(spec, cellCoordinate(spec, p)))
-                                      : outsideBin;
-  });
+  backend::forEach(
+      n, SPH_LAMBDA(std::size_t i) {
+        const Vec3 p = xyz(position[i]);
+        cell[i] = insideDomain(domain, p)
+                      ? cellIndex(spec, clampToGrid(spec, cellCoordinate(spec, p)))
+                      : outsideBin;
+      });
 
   grid.cellStart.resize(spec.cellCount + 2);
   backend::countingSort(cell, n, outsideBin + 1, fluid.order.data(), grid.cellStart.data());

@@ -36,21 +36,22 @@ void integrate(FluidParticles& fluid, float dt, const DomainParameters& domain) 
   const Vec4* acceleration = fluid.acceleration.data();
   const DomainParameters d = domain;
 
-  backend::forEach(fluid.count, SPH_LAMBDA(std::size_t i) {
-    Vec3 v = xyz(velocity[i]) + xyz(acceleration[i]) * dt;
-    Vec3 x = xyz(position[i]) + v * dt;
-    if (d.dampedBox) {
-      reflect(x.x, v.x, d.min.x, d.max.x, d.damping);
-      reflect(x.y, v.y, d.min.y, d.max.y, d.damping);
-      reflect(x.z, v.z, d.min.z, d.max.z, d.damping);
-    } else if (d.clampOutside) {
-      clamp(x.x, v.x, d.min.x, d.max.x);
-      clamp(x.y, v.y, d.min.y, d.max.y);
-      clamp(x.z, v.z, d.min.z, d.max.z);
-    }
-    velocity[i] = makeVec4(v);
-    position[i] = makeVec4(x);
-  });
+  backend::forEach(
+      fluid.count, SPH_LAMBDA(std::size_t i) {
+        Vec3 v = xyz(velocity[i]) + xyz(acceleration[i]) * dt;
+        Vec3 x = xyz(position[i]) + v * dt;
+        if (d.dampedBox) {
+          reflect(x.x, v.x, d.min.x, d.max.x, d.damping);
+          reflect(x.y, v.y, d.min.y, d.max.y, d.damping);
+          reflect(x.z, v.z, d.min.z, d.max.z, d.damping);
+        } else if (d.clampOutside) {
+          clamp(x.x, v.x, d.min.x, d.max.x);
+          clamp(x.y, v.y, d.min.y, d.max.y);
+          clamp(x.z, v.z, d.min.z, d.max.z);
+        }
+        velocity[i] = makeVec4(v);
+        position[i] = makeVec4(x);
+      });
 }
 
 }  // namespace sph::fluid

@@ -42,8 +42,7 @@ StepMeasures measureStep(const FluidParticles& fluid, float restDensity) {
   return m;
 }
 
-BadParticle findBadParticle(const FluidParticles& fluid, float restDensity,
-                            float maxDensityError) {
+BadParticle findBadParticle(const FluidParticles& fluid, float restDensity, float maxDensityError) {
   BadParticle bad;
   for (std::size_t i = 0; i < fluid.count; ++i) {
     const Vec3 v = xyz(fluid.velocity[i]);

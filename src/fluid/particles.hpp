@@ -15,8 +15,8 @@ using backend::Buffer;
 struct FluidParticles {
   std::size_t count = 0;
   // state, reordered by buildGrid (n)
-  Buffer<Vec4> position;  // xyz, w unused
-  Buffer<Vec4> velocity;  // xyz, w unused
+  Buffer<Vec4> position;     // xyz, w unused
+  Buffer<Vec4> velocity;     // xyz, w unused
   Buffer<std::uint32_t> id;  // stable particle id
   // computed by computeDensityAndPressure (n)
   Buffer<float> density;
@@ -34,8 +34,8 @@ struct FluidParticles {
 struct BoundaryParticles {
   std::size_t count = 0;
   GridSpec grid;                    // covers the walls with a cell to spare
-  Buffer<Vec4> position;        // xyz; w = volume ψ_b, m³
-  Buffer<std::uint32_t> id;     // stable particle id
+  Buffer<Vec4> position;            // xyz; w = volume ψ_b, m³
+  Buffer<std::uint32_t> id;         // stable particle id
   Buffer<std::uint32_t> cellStart;  // cellCount + 1
 };
 

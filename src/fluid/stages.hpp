@@ -43,8 +43,7 @@ struct BadParticle {
   const char* quantity = "";
   float value = 0.0f;
 };
-BadParticle findBadParticle(const FluidParticles& fluid, float restDensity,
-                            float maxDensityError);
+BadParticle findBadParticle(const FluidParticles& fluid, float restDensity, float maxDensityError);
 
 // Symplectic Euler: v += dt a, then x += dt v; then the seed's damped box, or the clamp
 // policy, keeps particles in the domain.

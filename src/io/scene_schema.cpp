@@ -26,24 +26,26 @@ KeySchema arrayOf(std::string name, std::vector<KeySchema> elementKeys) {
 
 KeySchema buildSchema() {
   return object(
-      "", {value("name"), value("description"),
-           object("domain", {vec3("min"), vec3("max"), value("outside"), value("damped_box"),
-                             value("damping")}),
-           vec3("gravity"),
-           object("fluid",
-                  {value("rest_density"), value("spacing"), value("support_ratio"), value("kernel"),
-                   value("eos"), value("clamp_negative_pressure"), value("pressure_form"),
-                   object("viscosity", {value("model"), value("value"), value("wall_friction")}),
-                   object("surface_tension", {value("coefficient"), value("threshold")}),
-                   arrayOf("blocks", {vec3("min"), vec3("max"), vec3("velocity"), value("hydrostatic")})}),
-           arrayOf("walls",
-                   {value("type"), vec3("min"), vec3("max"), value("layers"), value("closed")}),
-           object("calibration", {value("mass"), value("max_expected_speed"),
-                                  value("speed_of_sound"), value("stiffness")}),
-           object("time", {value("duration"), value("cfl"), value("force_factor"),
-                           value("viscous_factor"), value("max_dt"), value("fixed_dt")}),
-           object("output", {value("fps"), value("format")}),
-           object("failure", {value("max_density_error")})});
+      "",
+      {value("name"), value("description"),
+       object("domain",
+              {vec3("min"), vec3("max"), value("outside"), value("damped_box"), value("damping")}),
+       vec3("gravity"),
+       object(
+           "fluid",
+           {value("rest_density"), value("spacing"), value("support_ratio"), value("kernel"),
+            value("eos"), value("clamp_negative_pressure"), value("pressure_form"),
+            object("viscosity", {value("model"), value("value"), value("wall_friction")}),
+            object("surface_tension", {value("coefficient"), value("threshold")}),
+            arrayOf("blocks", {vec3("min"), vec3("max"), vec3("velocity"), value("hydrostatic")})}),
+       arrayOf("walls",
+               {value("type"), vec3("min"), vec3("max"), value("layers"), value("closed")}),
+       object("calibration", {value("mass"), value("max_expected_speed"), value("speed_of_sound"),
+                              value("stiffness")}),
+       object("time", {value("duration"), value("cfl"), value("force_factor"),
+                       value("viscous_factor"), value("max_dt"), value("fixed_dt")}),
+       object("output", {value("fps"), value("format")}),
+       object("failure", {value("max_density_error")})});
 }
 
 // Optimal string alignment distance: insertions, deletions, substitutions and swaps of two

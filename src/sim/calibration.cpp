@@ -76,13 +76,14 @@ Calibration calibrate(const Scene& scene) {
   out.supportRadius = f.supportRatio * f.spacing;
 
   out.massFromScene = c.mass.has_value();
-  out.mass = c.mass ? *c.mass
-                    : f.restDensity / latticeKernelSum(f.kernel, out.supportRadius, f.spacing);
+  out.mass =
+      c.mass ? *c.mass : f.restDensity / latticeKernelSum(f.kernel, out.supportRadius, f.spacing);
 
   out.maxExpectedSpeedFromScene = c.maxExpectedSpeed.has_value();
   const double v0 = largestBlockSpeed(scene);
   const double fall = freeFallSpeed(gravityMagnitude(scene), fallHeight(scene));
-  out.maxExpectedSpeed = c.maxExpectedSpeed ? *c.maxExpectedSpeed : std::sqrt(v0 * v0 + fall * fall);
+  out.maxExpectedSpeed =
+      c.maxExpectedSpeed ? *c.maxExpectedSpeed : std::sqrt(v0 * v0 + fall * fall);
 
   out.soundSpeedFromScene = c.speedOfSound.has_value();
   if (c.speedOfSound) {
@@ -106,11 +107,12 @@ Calibration calibrate(const Scene& scene) {
                                : f.viscosity * out.supportRadius * out.soundSpeed / 10.0;
 
   const TimeDesc& t = scene.time;
-  out.initialDt = t.fixedDt ? *t.fixedDt
-                            : std::min({cflTimeStep(t.cfl, out.supportRadius, out.soundSpeed, 0.0),
-                                        viscousTimeStep(t.viscousFactor, out.supportRadius,
-                                                        out.kinematicViscosity),
-                                        t.maxDt});
+  out.initialDt =
+      t.fixedDt
+          ? *t.fixedDt
+          : std::min({cflTimeStep(t.cfl, out.supportRadius, out.soundSpeed, 0.0),
+                      viscousTimeStep(t.viscousFactor, out.supportRadius, out.kinematicViscosity),
+                      t.maxDt});
   return out;
 }
 

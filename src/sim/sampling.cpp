@@ -52,8 +52,8 @@ std::vector<Vec3> sampleTank(const WallTank& tank, double spacing, const Vec3d& 
   return points;
 }
 
-void compressHydrostatically(std::vector<Vec3>& points, const AxisBox& block,
-                             const Vec3d& gravity, double soundSpeed) {
+void compressHydrostatically(std::vector<Vec3>& points, const AxisBox& block, const Vec3d& gravity,
+                             double soundSpeed) {
   const int up = upAxisOf(gravity);
   const double g = std::abs(gravity[up]);
   if (g == 0.0 || soundSpeed <= 0.0) return;

@@ -20,8 +20,8 @@ std::vector<Vec3> sampleTank(const WallTank& tank, double spacing, const Vec3d& 
 // equilibrium: at depth z below the block's top the density is ρ0 (1 + g z / c0²) to first
 // order for every equation of state, so a column of lattice spacing d shortens to
 // z' = (c0²/g) ln(1 + g z / c0²).
-void compressHydrostatically(std::vector<Vec3>& points, const AxisBox& block,
-                             const Vec3d& gravity, double soundSpeed);
+void compressHydrostatically(std::vector<Vec3>& points, const AxisBox& block, const Vec3d& gravity,
+                             double soundSpeed);
 
 // The axis gravity acts along (y when there is none).
 int upAxisOf(const Vec3d& gravity);

@@ -102,16 +102,19 @@ struct Simulation::Impl {
     const float bound = static_cast<float>(scene.failure.maxDensityError);
     if (!m.finite || m.maxDensityError > bound) fail(bound);
     const TimeDesc& t = scene.time;
-    double next = t.fixedDt ? *t.fixedDt
-                            : std::min({cflTimeStep(t.cfl, params.h, params.soundSpeed, m.maxSpeed),
-                                        forceTimeStep(t.forceFactor, params.h, m.maxAcceleration),
-                                        viscousTimeStep(t.viscousFactor, params.h,
-                                                        calibration.kinematicViscosity),
-                                        t.maxDt});
+    double next =
+        t.fixedDt
+            ? *t.fixedDt
+            : std::min({cflTimeStep(t.cfl, params.h, params.soundSpeed, m.maxSpeed),
+                        forceTimeStep(t.forceFactor, params.h, m.maxAcceleration),
+                        viscousTimeStep(t.viscousFactor, params.h, calibration.kinematicViscosity),
+                        t.maxDt});
     const double remaining = until - time;
     // Land exactly on `until` rather than leave a sliver of a step for later.
-    if (next >= remaining) next = remaining;
-    else if (next > 0.5 * remaining) next = 0.5 * remaining;
+    if (next >= remaining)
+      next = remaining;
+    else if (next > 0.5 * remaining)
+      next = 0.5 * remaining;
     return next;
   }
 

@@ -85,8 +85,7 @@ void appendFluid(FrameBuilder& b, const fluid::FluidParticles& f, std::uint64_t 
   for (std::int64_t slot : slotOfId) {
     if (slot < 0) continue;
     const auto i = static_cast<std::size_t>(slot);
-    b.push(f.id[i], f.position[i], f.velocity[i], f.density[i], f.pressure[i],
-           ParticleKind::Fluid);
+    b.push(f.id[i], f.position[i], f.velocity[i], f.density[i], f.pressure[i], ParticleKind::Fluid);
   }
 }
 

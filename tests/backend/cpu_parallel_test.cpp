@@ -62,11 +62,12 @@ TEST(CpuParallel, ExclusiveScan) {
 
 TEST(CpuParallel, ReduceSumsAndTakesMaxima) {
   const std::size_t n = 12345;
-  const double sum = reduce(n, 0.0, [](std::size_t i) { return double(i); },
-                            [](double a, double b) { return a + b; });
+  const double sum = reduce(
+      n, 0.0, [](std::size_t i) { return double(i); }, [](double a, double b) { return a + b; });
   EXPECT_DOUBLE_EQ(sum, double(n) * (n - 1) / 2);
-  const int largest = reduce(n, -1, [](std::size_t i) { return int((i * 7919) % 1000); },
-                             [](int a, int b) { return std::max(a, b); });
+  const int largest = reduce(
+      n, -1, [](std::size_t i) { return int((i * 7919) % 1000); },
+      [](int a, int b) { return std::max(a, b); });
   EXPECT_EQ(largest, 999);
 }
 

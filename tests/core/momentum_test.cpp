@@ -11,7 +11,9 @@ const auto kKernels = MullerKernels<float>::make(0.02);
 const Vec3 kXi{0.001f, 0.002f, 0.0f}, kXj{0.009f, -0.003f, 0.004f};
 const Vec3 kVi{0.3f, -0.1f, 0.2f}, kVj{-0.2f, 0.05f, 0.1f};
 
-Vec3 gradW(Vec3 rij) { return rij * kKernels.gradFactor(length(rij)); }
+Vec3 gradW(Vec3 rij) {
+  return rij * kKernels.gradFactor(length(rij));
+}
 
 void expectOpposite(Vec3 a, Vec3 b) {
   EXPECT_NEAR(a.x, -b.x, 1e-5f * std::abs(a.x) + 1e-9f);
@@ -31,21 +33,22 @@ TEST(Momentum, PressureFormsAreAntisymmetric) {
 
 TEST(Momentum, PressureRepels) {
   const Vec3 rij = kXi - kXj;
-  const Vec3 a = pressureAccelerationSymmetric(0.008f, 300.0f, 1000.0f, 300.0f, 1000.0f, gradW(rij));
+  const Vec3 a =
+      pressureAccelerationSymmetric(0.008f, 300.0f, 1000.0f, 300.0f, 1000.0f, gradW(rij));
   EXPECT_GT(dot(a, rij), 0.0f);  // pushes i away from j
 }
 
 TEST(Momentum, ViscositiesAreAntisymmetricAndDamp) {
   const Vec3 rij = kXi - kXj, vij = kVi - kVj;
   const float r = length(rij);
-  const Vec3 m1 = mullerViscosityAcceleration(0.1f, 0.008f, 1000.0f, 1010.0f, vij,
-                                              kKernels.laplacian(r));
-  expectOpposite(m1, mullerViscosityAcceleration(0.1f, 0.008f, 1010.0f, 1000.0f, -vij,
-                                                 kKernels.laplacian(r)));
+  const Vec3 m1 =
+      mullerViscosityAcceleration(0.1f, 0.008f, 1000.0f, 1010.0f, vij, kKernels.laplacian(r));
+  expectOpposite(
+      m1, mullerViscosityAcceleration(0.1f, 0.008f, 1010.0f, 1000.0f, -vij, kKernels.laplacian(r)));
   EXPECT_LT(dot(m1, vij), 0.0f);  // reduces the relative velocity
 
-  const Vec3 a1 = artificialViscosityAcceleration(0.1f, 20.0f, 0.02f, 0.008f, 1000.0f, 1010.0f,
-                                                  vij, rij, r * r, gradW(rij));
+  const Vec3 a1 = artificialViscosityAcceleration(0.1f, 20.0f, 0.02f, 0.008f, 1000.0f, 1010.0f, vij,
+                                                  rij, r * r, gradW(rij));
   const Vec3 a2 = artificialViscosityAcceleration(0.1f, 20.0f, 0.02f, 0.008f, 1010.0f, 1000.0f,
                                                   -vij, -rij, r * r, gradW(-rij));
   ASSERT_LT(dot(vij, rij), 0.0f);  // the pair approaches
@@ -62,8 +65,8 @@ TEST(Momentum, BoundaryPressurePushesAwayFromWall) {
   const Vec3 a = boundaryPressureAcceleration(0.008f, 500.0f, 1000.0f, 500.0f, gradW(rib));
   EXPECT_GT(a.y, 0.0f);
   // A mirror particle at the same pressure pushes exactly as a fluid neighbour would.
-  const Vec3 fluid = pressureAccelerationSymmetric(0.008f, 500.0f, 1000.0f, 500.0f, 1000.0f,
-                                                   gradW(rib));
+  const Vec3 fluid =
+      pressureAccelerationSymmetric(0.008f, 500.0f, 1000.0f, 500.0f, 1000.0f, gradW(rib));
   EXPECT_FLOAT_EQ(a.y, fluid.y);
 }
 

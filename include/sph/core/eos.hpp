@@ -9,8 +9,8 @@ namespace sph {
 // Pressure from density. Clamping negative pressure keeps the free surface from tearing
 // apart (particles there lack neighbours, so their density reads low).
 template <class Real>
-SPH_HD Real pressureFromDensity(EquationOfState eos, Real density, Real restDensity,
-                                Real stiffness, bool clampNegative) {
+SPH_HD Real pressureFromDensity(EquationOfState eos, Real density, Real restDensity, Real stiffness,
+                                bool clampNegative) {
   Real p;
   switch (eos) {
     case EquationOfState::Linear:  // seed 1 eq. 5 with p0 = 0

@@ -32,7 +32,9 @@ SPH_HD bool insideGrid(const GridSpec& g, Int3 c) {
   return c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x < g.dims.x && c.y < g.dims.y && c.z < g.dims.z;
 }
 
-SPH_HD int clampInt(int v, int lo, int hi) { return v < lo ? lo : (v > hi ? hi : v); }
+SPH_HD int clampInt(int v, int lo, int hi) {
+  return v < lo ? lo : (v > hi ? hi : v);
+}
 
 SPH_HD Int3 clampToGrid(const GridSpec& g, Int3 c) {
   return Int3{clampInt(c.x, 0, g.dims.x - 1), clampInt(c.y, 0, g.dims.y - 1),

@@ -15,8 +15,8 @@ SPH_HD Vec3 pressureAccelerationSymmetric(float massJ, float pressureI, float de
 }
 
 // Seed 1 eq. 6 divided by ρ_i: -m_j (p_i + p_j) / (2 ρ_i ρ_j) ∇W.
-SPH_HD Vec3 pressureAccelerationPaper(float massJ, float pressureI, float densityI,
-                                      float pressureJ, float densityJ, Vec3 gradW) {
+SPH_HD Vec3 pressureAccelerationPaper(float massJ, float pressureI, float densityI, float pressureJ,
+                                      float densityJ, Vec3 gradW) {
   const float s = (pressureI + pressureJ) / (2.0f * densityI * densityJ);
   return gradW * (-massJ * s);
 }

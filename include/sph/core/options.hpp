@@ -5,7 +5,7 @@ namespace sph {
 
 enum class KernelKind { Muller, CubicSpline, WendlandC2 };
 enum class EquationOfState { Linear, Ratio, Tait };  // k(ρ-ρ0), k(ρ/ρ0-1), B((ρ/ρ0)^7-1)
-enum class PressureForm { Paper, Symmetric };         // (p_i+p_j)/(2ρ_j) or p_i/ρ_i²+p_j/ρ_j²
+enum class PressureForm { Paper, Symmetric };        // (p_i+p_j)/(2ρ_j) or p_i/ρ_i²+p_j/ρ_j²
 enum class ViscosityModel { Muller, Artificial };
 
 }  // namespace sph

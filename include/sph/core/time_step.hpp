@@ -22,7 +22,9 @@ inline double viscousTimeStep(double factor, double h, double kinematicViscosity
 }
 
 // Speed of sound about ten times the largest expected speed keeps density errors near 1 %.
-inline double soundSpeedForMaxSpeed(double maxExpectedSpeed) { return 10.0 * maxExpectedSpeed; }
+inline double soundSpeedForMaxSpeed(double maxExpectedSpeed) {
+  return 10.0 * maxExpectedSpeed;
+}
 
 // Largest speed of a column of height H falling freely: sqrt(2 g H).
 inline double freeFallSpeed(double gravity, double height) {

@@ -1,0 +1,143 @@
+// The command-line contract (DESIGN.md): outputs, exit codes, and never overwriting a run.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int code;
+  std::string output;  // stdout and stderr together
+};
+
+Result runSph(const std::string& arguments) {
+  const fs::path log = fs::path(::testing::TempDir()) / "sph_cli_output.txt";
+  const std::string command =
+      std::string(SPH_BINARY) + " " + arguments + " > " + log.string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ =
+        fs::path(::testing::TempDir()) /
+        ("sph_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    scene_ = dir_ / "drop.json";
+    std::ofstream(scene_) << R"({
+      "name": "drop",
+      "domain": {"min": [0, 0, 0], "max": [0.1, 0.1, 0.1], "damped_box": true},
+      "fluid": {"spacing": 0.01, "blocks": [{"min": [0.02, 0.04, 0.02], "max": [0.08, 0.08, 0.08]}]},
+      "time": {"duration": 0.02},
+      "output": {"fps": 100}
+    })";
+  }
+  fs::path dir_, scene_;
+};
+
+TEST_F(Cli, RunWritesFramesStatsAndSummary) {
+  const fs::path out = dir_ / "run";
+  const Result r = runSph("run " + scene_.string() + " --out " + out.string() + " --quiet");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "frames" / "frame_00000.vtp"));
+  EXPECT_TRUE(fs::exists(out / "frames" / "frame_00002.vtp"));
+  EXPECT_FALSE(fs::exists(out / "frames" / "frame_00003.vtp"));
+  EXPECT_NE(readFile(out / "frames.pvd").find("frames/frame_00002.vtp"), std::string::npos);
+  // A header and one row per frame: t = 0, 0.01, 0.02.
+  const std::string stats = readFile(out / "stats.csv");
+  EXPECT_EQ(std::count(stats.begin(), stats.end(), '\n'), 4);
+  EXPECT_EQ(stats.rfind("time,steps,dt,", 0), 0u);
+  const auto summary = nlohmann::json::parse(readFile(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "completed");
+  EXPECT_DOUBLE_EQ(summary["simulated_time"].get<double>(), 0.02);
+  EXPECT_EQ(summary["calibration"]["fluid_particles"], 6 * 4 * 6);
+  EXPECT_EQ(summary["scene"]["fluid"]["spacing"], 0.01);
+}
+
+TEST_F(Cli, FormatsAndOverridesFromTheCommandLine) {
+  const fs::path out = dir_ / "ply";
+  const Result r = runSph("run " + scene_.string() + " --out " + out.string() +
+                          " --quiet --format ply --fps 50 --set time.duration=0.04");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "frames" / "frame_00002.ply"));
+  EXPECT_FALSE(fs::exists(out / "frames" / "frame_00003.ply"));
+  EXPECT_EQ(readFile(out / "frames" / "frame_00000.ply").rfind("ply\n", 0), 0u);
+}
+
+TEST_F(Cli, NeverOverwritesAnEarlierRunUnlessForced) {
+  const fs::path out = dir_ / "run";
+  ASSERT_EQ(runSph("run " + scene_.string() + " --out " + out.string() + " --quiet").code, 0);
+  const std::string before = readFile(out / "stats.csv");
+  const Result again = runSph("run " + scene_.string() + " --out " + out.string() +
+                              " --quiet --set time.duration=0.01");
+  EXPECT_EQ(again.code, 2);
+  EXPECT_NE(again.output.find("--force"), std::string::npos) << again.output;
+  EXPECT_EQ(readFile(out / "stats.csv"), before) << "the earlier run must be untouched";
+  const Result forced = runSph("run " + scene_.string() + " --out " + out.string() +
+                               " --quiet --force --set time.duration=0.01");
+  EXPECT_EQ(forced.code, 0) << forced.output;
+  EXPECT_NE(readFile(out / "stats.csv"), before);
+}
+
+TEST_F(Cli, BadInputExitsTwoNamingFileAndKey) {
+  const Result r = runSph("run " + scene_.string() + " --out " + (dir_ / "bad").string() +
+                          " --set fluid.spacng=0.02");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("drop.json"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("fluid.spacng"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("fluid.spacing"), std::string::npos) << "suggests the nearest key";
+  EXPECT_FALSE(fs::exists(dir_ / "bad" / "stats.csv"));
+
+  EXPECT_EQ(runSph("run " + (dir_ / "missing.json").string()).code, 2);
+  EXPECT_EQ(runSph("run " + scene_.string() + " --backend cuda").code, 2);
+  EXPECT_EQ(runSph("validate " + scene_.string() + " --set fluid.spacing=-1").code, 2);
+}
+
+TEST_F(Cli, BlowUpExitsThreeKeepingWhatWasComputed) {
+  const fs::path out = dir_ / "blowup";
+  const Result r = runSph(
+      "run " + scene_.string() + " --out " + out.string() +
+      " --quiet --set time.fixed_dt=0.005 --set calibration.stiffness=1e5 --set time.duration=0.5");
+  EXPECT_EQ(r.code, 3) << r.output;
+  EXPECT_NE(r.output.find("particle"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("step"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(out / "frames" / "frame_00000.vtp"));
+  const auto summary = nlohmann::json::parse(readFile(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "failed");
+  EXPECT_TRUE(summary["failure"].contains("particle"));
+  const std::string stats = readFile(out / "stats.csv");
+  EXPECT_GE(std::count(stats.begin(), stats.end(), '\n'), 2) << "header and the first frame";
+}
+
+TEST_F(Cli, ValidateAndInfo) {
+  const Result v = runSph("validate " + scene_.string());
+  EXPECT_EQ(v.code, 0) << v.output;
+  EXPECT_NE(v.output.find("speed of sound"), std::string::npos);
+  EXPECT_NE(v.output.find("derived"), std::string::npos);
+  const Result i = runSph("info");
+  EXPECT_EQ(i.code, 0);
+  EXPECT_NE(i.output.find("cpu"), std::string::npos);
+}
+
+}  // namespace
