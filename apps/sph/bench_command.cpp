@@ -8,9 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "backend/cpu_parallel.hpp"
-#include "box_drop.hpp"
 #include "commands.hpp"
 #include "report.hpp"
+#include "sph/box_drop_scene.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::cli {

@@ -56,6 +56,7 @@ nlohmann::json calibrationJson(const Calibration& c) {
           {"stiffness_from_scene", c.stiffnessFromScene},
           {"kinematic_viscosity", c.kinematicViscosity},
           {"initial_dt", c.initialDt},
+          {"surface_threshold", c.surfaceThreshold},
           {"fluid_particles", c.fluidParticles},
           {"boundary_particles", c.boundaryParticles}};
 }

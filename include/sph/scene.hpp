@@ -57,7 +57,9 @@ struct FluidDesc {
   double viscosity = 0.0;           // μ (Pa·s) for Müller; α (dimensionless) for artificial
   double wallFriction = 0.0;        // fraction of the fluid viscosity applied against walls
   double surfaceTension = 0.0;      // σ (N/m); 0 disables
-  double surfaceThreshold = 7.065;  // |∇c| above which surface tension acts (seed 2)
+  // |∇c| (1/m) above which a particle is on the surface and surface tension acts; unset: 0.22/h,
+  // seed 2's 7.065 at its h = 1/32, scaled to ours.
+  std::optional<double> surfaceThreshold;
   std::vector<FluidBlock> blocks;
 };
 

@@ -25,6 +25,7 @@ struct Calibration {
   double stiffness = 0.0;           // k or B of the equation of state
   double kinematicViscosity = 0.0;  // ν used by the viscous time step condition, m²/s
   double initialDt = 0.0;           // s
+  double surfaceThreshold = 0.0;  // |∇c| of a surface particle, 1/m
   bool massFromScene = false;
   bool maxExpectedSpeedFromScene = false;
   bool soundSpeedFromScene = false;

@@ -49,7 +49,7 @@ FluidDesc readFluid(const ObjectReader& in) {
   readViscosity(in.object("viscosity"), fluid);
   const ObjectReader tension = in.object("surface_tension");
   fluid.surfaceTension = tension.number("coefficient", fluid.surfaceTension, kNonNegative);
-  fluid.surfaceThreshold = tension.number("threshold", fluid.surfaceThreshold, kPositive);
+  fluid.surfaceThreshold = tension.optionalNumber("threshold", kPositive);
   for (const ObjectReader& blockIn : in.objectArray("blocks", /*required=*/true,
                                                     /*nonEmpty=*/true)) {
     FluidBlock block;

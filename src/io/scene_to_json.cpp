@@ -52,7 +52,7 @@ json fluidToJson(const FluidDesc& fluid) {
         {"value", fluid.viscosity},
         {"wall_friction", fluid.wallFriction}}},
       {"surface_tension",
-       {{"coefficient", fluid.surfaceTension}, {"threshold", fluid.surfaceThreshold}}},
+       {{"coefficient", fluid.surfaceTension}, {"threshold", toJson(fluid.surfaceThreshold)}}},
       {"blocks", std::move(blocks)},
   };
 }

@@ -13,6 +13,9 @@ namespace sph::sim {
 
 namespace {
 
+// Seed 2: threshold 7.065 with a support radius of 2/64.
+constexpr double kSeedSurfaceThresholdTimesH = 7.065 * 2.0 / 64.0;
+
 template <class Kernels>
 double latticeSum(const Kernels& kernels, double h, double spacing) {
   const int reach = static_cast<int>(std::ceil(h / spacing));
@@ -106,6 +109,9 @@ Calibration calibrate(const Scene& scene) {
                                ? f.viscosity / f.restDensity
                                : f.viscosity * out.supportRadius * out.soundSpeed / 10.0;
 
+  out.surfaceThreshold =
+      f.surfaceThreshold ? *f.surfaceThreshold : kSeedSurfaceThresholdTimesH / out.supportRadius;
+
   const TimeDesc& t = scene.time;
   out.initialDt =
       t.fixedDt
@@ -132,7 +138,7 @@ fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& c)
   p.viscosity = static_cast<float>(f.viscosity);
   p.wallFriction = static_cast<float>(f.wallFriction);
   p.surfaceTension = static_cast<float>(f.surfaceTension);
-  p.surfaceThreshold = static_cast<float>(f.surfaceThreshold);
+  p.surfaceThreshold = static_cast<float>(c.surfaceThreshold);
   p.gravity = Vec3{static_cast<float>(scene.gravity[0]), static_cast<float>(scene.gravity[1]),
                    static_cast<float>(scene.gravity[2])};
   return p;

@@ -47,7 +47,7 @@ TEST(SceneLoader, CompleteSceneSetsEveryField) {
   EXPECT_EQ(fluid.viscosity, 0.05);
   EXPECT_EQ(fluid.wallFriction, 0.4);
   EXPECT_EQ(fluid.surfaceTension, 0.0728);
-  EXPECT_EQ(fluid.surfaceThreshold, 6.5);
+  EXPECT_EQ(fluid.surfaceThreshold, std::optional<double>(6.5));
   ASSERT_EQ(fluid.blocks.size(), 2u);
   EXPECT_EQ(fluid.blocks[0].box.min, (Vec3d{0, 0, -0.1}));
   EXPECT_EQ(fluid.blocks[0].box.max, (Vec3d{0.4, 0.6, 0.2}));

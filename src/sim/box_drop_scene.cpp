@@ -1,9 +1,9 @@
-#include "box_drop.hpp"
+#include "sph/box_drop_scene.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace sph::cli {
+namespace sph {
 
 namespace {
 
@@ -46,4 +46,4 @@ Scene boxDropScene(int particles) {
   return s;
 }
 
-}  // namespace sph::cli
+}  // namespace sph

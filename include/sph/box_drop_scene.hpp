@@ -3,10 +3,10 @@
 
 #include "sph/scene.hpp"
 
-namespace sph::cli {
+namespace sph {
 
 // A block of about `particles` fluid particles (exactly, when it factors as nx·ny·nx) at the
 // top of a damped box twice its size, Müller kernels, h = 2d.
 Scene boxDropScene(int particles);
 
-}  // namespace sph::cli
+}  // namespace sph
