@@ -39,6 +39,8 @@ void printCalibration(std::FILE* out, const Simulation& sim) {
   std::fprintf(out, "  stiffness %-10s %.6g (%s)\n", eosStiffnessName(s.fluid.eos), c.stiffness,
                origin(c.stiffnessFromScene));
   std::fprintf(out, "  kinematic viscosity  %.6g m^2/s\n", c.kinematicViscosity);
+  std::fprintf(out, "  surface threshold    |grad c| > %.6g 1/m (%s)\n", c.surfaceThreshold,
+               origin(s.fluid.surfaceThreshold.has_value()));
   std::fprintf(out, "  first time step      %.6g s (CFL %.3g; adaptive unless time.fixed_dt)\n",
                c.initialDt, s.time.cfl);
 }

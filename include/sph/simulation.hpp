@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <vector>
 
 #include "sph/frame.hpp"
 #include "sph/scene.hpp"
@@ -58,6 +59,11 @@ class Simulation {
   void step(double until = std::numeric_limits<double>::infinity());
   // Steps until time() reaches t exactly.
   void advanceTo(double t);
+
+  // An external acceleration (m/s², added to gravity) for each fluid particle, by id:
+  // `byId` holds x, y, z for ids 0 .. fluidParticles-1. It stays until replaced; an empty
+  // vector removes it. Throws std::invalid_argument on a wrong size.
+  void setExternalAcceleration(const std::vector<float>& byId);
 
   double time() const;
   std::uint64_t stepCount() const;

@@ -21,6 +21,8 @@ void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles&
   const float* pressure = fluid.pressure.data();
   const Vec4* wall = boundary.position.data();
   Vec4* acceleration = fluid.acceleration.data();
+  const std::uint32_t* id = fluid.id.data();
+  const Vec4* external = fluid.externalById.size() ? fluid.externalById.data() : nullptr;
   const FluidParameters p = params;
   const float h2 = p.h * p.h;
   const bool symmetric = p.pressureForm == PressureForm::Symmetric;
@@ -32,7 +34,7 @@ void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles&
         const Vec3 vi = xyz(velocity[i]);
         const float rhoI = density[i];
         const float pI = pressure[i];
-        Vec3 a = p.gravity;
+        Vec3 a = external ? p.gravity + xyz(external[id[i]]) : p.gravity;
         Vec3 colourGradient{0.0f, 0.0f, 0.0f};
         float colourLaplacian = 0.0f;
 

@@ -23,6 +23,8 @@ struct FluidParticles {
   Buffer<float> pressure;
   // computed by computeForces (n)
   Buffer<Vec4> acceleration;  // xyz; w = |∇c|, the colour-field gradient (seed 1 eq. 12)
+  // set by the embedding application, indexed by particle id; empty when unused
+  Buffer<Vec4> externalById;  // xyz: external acceleration, m/s²
   // scratch of buildGrid (n)
   Buffer<std::uint32_t> cell;
   Buffer<std::uint32_t> order;

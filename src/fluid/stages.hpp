@@ -21,8 +21,9 @@ void prepareBoundary(BoundaryParticles& boundary, const FluidParameters& params)
 void computeDensityAndPressure(FluidParticles& fluid, const Grid& grid,
                                const BoundaryParticles& boundary, const FluidParameters& params);
 
-// Reads position, velocity, density, pressure, boundary. Writes acceleration: pressure,
-// viscosity, surface tension and gravity in one pass (seed 1 Algorithm 2), and |∇c|.
+// Reads position, velocity, density, pressure, boundary, externalById. Writes acceleration:
+// pressure, viscosity, surface tension, gravity and external forces in one pass (seed 1
+// Algorithm 2), and |∇c|.
 void computeForces(FluidParticles& fluid, const Grid& grid, const BoundaryParticles& boundary,
                    const FluidParameters& params);
 

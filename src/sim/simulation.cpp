@@ -1,5 +1,8 @@
 #include "sph/simulation.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "sim/simulation_impl.hpp"
 
 namespace sph {
@@ -21,6 +24,22 @@ void Simulation::step(double until) {
   profile.integrate = timedMs([&] { fluid::integrate(s.fluid, float(s.dt), s.domain); });
   s.time = (s.dt == until - s.time) ? until : s.time + s.dt;
   ++s.steps;
+}
+
+void Simulation::setExternalAcceleration(const std::vector<float>& byId) {
+  fluid::FluidParticles& f = impl_->fluid;
+  if (byId.empty()) {
+    f.externalById.resize(0);
+    return;
+  }
+  const std::size_t n = impl_->initialFluid;
+  if (byId.size() != 3 * n)
+    throw std::invalid_argument("setExternalAcceleration: expected 3 × " + std::to_string(n) +
+                                " values (x, y, z per fluid particle), got " +
+                                std::to_string(byId.size()));
+  f.externalById.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    f.externalById[i] = Vec4{byId[3 * i], byId[3 * i + 1], byId[3 * i + 2], 0.0f};
 }
 
 void Simulation::advanceTo(double t) {
