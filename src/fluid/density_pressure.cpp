@@ -3,6 +3,7 @@
 #include "fluid/neighbors.hpp"
 #include "fluid/stages.hpp"
 #include "sph/core/eos.hpp"
+#include "sph/core/momentum.hpp"
 
 namespace sph::fluid {
 
@@ -19,15 +20,27 @@ void densityPass(FluidParticles& fluid, const Grid& grid, const BoundaryParticle
   const Vec4* wall = boundary.position.data();
   float* density = fluid.density.data();
   float* pressure = fluid.pressure.data();
+  Vec4* state = fluid.pressureState.data();
+  const std::uint32_t stride = fluid.neighborStride;
+  std::uint32_t* neighbors = fluid.neighbors.data();
+  std::uint32_t* neighborCount = fluid.neighborCount.data();
+  const float h2 = params.h * params.h;
   const FluidParameters p = params;
 
   backend::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const Vec3 xi = xyz(position[i]);
         float sum = 0.0f;  // seed 1 eq. 4, self included
+        std::uint32_t* list = neighbors + i * stride;
+        std::uint32_t count = 0;
         forEachNeighbor(spec, cellStart, xi, [&](std::uint32_t j) {
-          sum += kernels.W(lengthSquared(xi - xyz(position[j])));
+          const float r2 = lengthSquared(xi - xyz(position[j]));
+          if (r2 >= h2) return;
+          sum += kernels.W(r2);
+          if (j != i && count < stride) list[count] = j;
+          if (j != i) ++count;
         });
+        neighborCount[i] = count <= stride ? count : kNeighborOverflow;
         float wallSum = 0.0f;  // Akinci et al. 2012 eq. 6: walls count with mass ρ0 ψ_b
         if (wallCellStart != nullptr) {
           forEachNeighbor(wallGrid, wallCellStart, xi, [&](std::uint32_t b) {
@@ -35,9 +48,11 @@ void densityPass(FluidParticles& fluid, const Grid& grid, const BoundaryParticle
           });
         }
         const float rho = p.mass * sum + p.restDensity * wallSum;
-        density[i] = rho;
-        pressure[i] =
+        const float pi =
             pressureFromDensity(p.eos, rho, p.restDensity, p.stiffness, p.clampNegativePressure);
+        density[i] = rho;
+        pressure[i] = pi;
+        state[i] = Vec4{pressureOverDensitySquared(pi, rho), 1.0f / rho, pi, rho};
       });
 }
 

@@ -8,54 +8,77 @@ namespace sph::fluid {
 
 namespace {
 
-template <class Kernels>
+// The scene's choices as compile-time constants, so the neighbour loop has no branch on them.
+template <PressureForm kForm, ViscosityModel kViscosity, bool kSurfaceTension>
+struct ForceOptions {
+  static constexpr PressureForm form = kForm;
+  static constexpr ViscosityModel viscosity = kViscosity;
+  static constexpr bool surfaceTension = kSurfaceTension;
+};
+
+template <class Options, class Kernels>
 void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles& boundary,
                const FluidParameters& params, Kernels kernels) {
+  constexpr bool kSymmetric = Options::form == PressureForm::Symmetric;
+  constexpr bool kArtificial = Options::viscosity == ViscosityModel::Artificial;
   const GridSpec spec = grid.spec;
   const std::uint32_t* cellStart = grid.cellStart.data();
   const GridSpec wallGrid = boundary.grid;
   const std::uint32_t* wallCellStart = boundary.cellStart.data();
   const Vec4* position = fluid.position.data();
   const Vec4* velocity = fluid.velocity.data();
-  const float* density = fluid.density.data();
-  const float* pressure = fluid.pressure.data();
+  const Vec4* state = fluid.pressureState.data();  // p/ρ², 1/ρ, p, ρ
   const Vec4* wall = boundary.position.data();
   Vec4* acceleration = fluid.acceleration.data();
   const std::uint32_t* id = fluid.id.data();
   const Vec4* external = fluid.externalById.size() ? fluid.externalById.data() : nullptr;
   const FluidParameters p = params;
   const float h2 = p.h * p.h;
-  const bool symmetric = p.pressureForm == PressureForm::Symmetric;
-  const bool artificial = p.viscosityModel == ViscosityModel::Artificial;
+  const std::uint32_t stride = fluid.neighborStride;
+  const std::uint32_t* neighbors = fluid.neighbors.data();
+  const std::uint32_t* neighborCount = fluid.neighborCount.data();
 
   backend::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const Vec3 xi = xyz(position[i]);
         const Vec3 vi = xyz(velocity[i]);
-        const float rhoI = density[i];
-        const float pI = pressure[i];
+        const Vec4 si = state[i];
+        const float pI = si.z, rhoI = si.w;
         Vec3 a = external ? p.gravity + xyz(external[id[i]]) : p.gravity;
         Vec3 colourGradient{0.0f, 0.0f, 0.0f};
         float colourLaplacian = 0.0f;
 
-        forEachNeighbor(spec, cellStart, xi, [&](std::uint32_t j) {
+        auto pair = [&](std::uint32_t j) {
           const Vec3 rij = xi - xyz(position[j]);
           const float r2 = lengthSquared(rij);
           if (r2 >= h2 || j == i) return;
           const float r = realSqrt(r2);
-          const float rhoJ = density[j];
+          const Vec4 sj = state[j];
           const Vec3 gradW = rij * kernels.gradFactor(r);
-          a += symmetric ? pressureAccelerationSymmetric(p.mass, pI, rhoI, pressure[j], rhoJ, gradW)
-                         : pressureAccelerationPaper(p.mass, pI, rhoI, pressure[j], rhoJ, gradW);
+          if (kSymmetric) {
+            a += pressureAccelerationSymmetric(p.mass, si.x, sj.x, gradW);
+          } else {
+            a += pressureAccelerationPaper(p.mass, pI, si.y, sj.z, sj.y, gradW);
+          }
           const Vec3 vij = vi - xyz(velocity[j]);
-          a += artificial ? artificialViscosityAcceleration(p.viscosity, p.soundSpeed, p.h, p.mass,
-                                                            rhoI, rhoJ, vij, rij, r2, gradW)
-                          : mullerViscosityAcceleration(p.viscosity, p.mass, rhoI, rhoJ, vij,
-                                                        kernels.laplacian(r));
-          const float volumeJ = p.mass / rhoJ;  // seed 1 eqs. 11-12 with C_j = 1
+          if (kArtificial) {
+            a += artificialViscosityAcceleration(p.viscosity, p.soundSpeed, p.h, p.mass, rhoI, sj.w,
+                                                 vij, rij, r2, gradW);
+          } else {
+            a += mullerViscosityAcceleration(p.viscosity, p.mass, rhoI, sj.w, vij,
+                                             kernels.laplacian(r));
+          }
+          const float volumeJ = p.mass * sj.y;  // seed 1 eqs. 11-12 with C_j = 1
           colourGradient += rij * (volumeJ * kernels.colourGradFactor(r));
-          colourLaplacian += volumeJ * kernels.colourLaplacian(r);
-        });
+          if (Options::surfaceTension) colourLaplacian += volumeJ * kernels.colourLaplacian(r);
+        };
+        const std::uint32_t count = neighborCount[i];
+        if (count != kNeighborOverflow) {
+          const std::uint32_t* list = neighbors + i * stride;
+          for (std::uint32_t k = 0; k < count; ++k) pair(list[k]);
+        } else {
+          forEachNeighbor(spec, cellStart, xi, pair);
+        }
 
         if (wallCellStart != nullptr) {
           forEachNeighbor(wallGrid, wallCellStart, xi, [&](std::uint32_t b) {
@@ -70,7 +93,7 @@ void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles&
             a += boundaryPressureAcceleration(massB, pI, rhoI, pB, gradW);
             if (p.wallFriction > 0.0f) {
               const Vec3 friction =
-                  artificial
+                  kArtificial
                       ? artificialViscosityAcceleration(p.viscosity, p.soundSpeed, p.h, massB, rhoI,
                                                         p.restDensity, vi, rib, r2, gradW)
                       : mullerViscosityAcceleration(p.viscosity, massB, rhoI, p.restDensity, vi,
@@ -83,7 +106,7 @@ void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles&
         }
 
         const float normalLength = length(colourGradient);
-        if (p.surfaceTension > 0.0f && normalLength > p.surfaceThreshold) {
+        if (Options::surfaceTension && normalLength > p.surfaceThreshold) {
           // Müller et al. 2003 eq. 19: f = -σ ∇²c n/|n|, as an acceleration.
           a -= colourGradient * (p.surfaceTension * colourLaplacian / (normalLength * rhoI));
         }
@@ -91,11 +114,42 @@ void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles&
       });
 }
 
+template <class Options>
+void forcePassWithKernels(FluidParticles& fluid, const Grid& grid,
+                          const BoundaryParticles& boundary, const FluidParameters& params) {
+  withKernels(params,
+              [&](auto kernels) { forcePass<Options>(fluid, grid, boundary, params, kernels); });
+}
+
+template <PressureForm kForm, ViscosityModel kViscosity>
+void forcePassWithTension(FluidParticles& fluid, const Grid& grid,
+                          const BoundaryParticles& boundary, const FluidParameters& params) {
+  if (params.surfaceTension > 0.0f) {
+    forcePassWithKernels<ForceOptions<kForm, kViscosity, true>>(fluid, grid, boundary, params);
+  } else {
+    forcePassWithKernels<ForceOptions<kForm, kViscosity, false>>(fluid, grid, boundary, params);
+  }
+}
+
+template <PressureForm kForm>
+void forcePassWithViscosity(FluidParticles& fluid, const Grid& grid,
+                            const BoundaryParticles& boundary, const FluidParameters& params) {
+  if (params.viscosityModel == ViscosityModel::Artificial) {
+    forcePassWithTension<kForm, ViscosityModel::Artificial>(fluid, grid, boundary, params);
+  } else {
+    forcePassWithTension<kForm, ViscosityModel::Muller>(fluid, grid, boundary, params);
+  }
+}
+
 }  // namespace
 
 void computeForces(FluidParticles& fluid, const Grid& grid, const BoundaryParticles& boundary,
                    const FluidParameters& params) {
-  withKernels(params, [&](auto kernels) { forcePass(fluid, grid, boundary, params, kernels); });
+  if (params.pressureForm == PressureForm::Symmetric) {
+    forcePassWithViscosity<PressureForm::Symmetric>(fluid, grid, boundary, params);
+  } else {
+    forcePassWithViscosity<PressureForm::Paper>(fluid, grid, boundary, params);
+  }
 }
 
 }  // namespace sph::fluid

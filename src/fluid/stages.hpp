@@ -17,11 +17,13 @@ std::size_t buildGrid(FluidParticles& fluid, Grid& grid, const DomainParameters&
 // Once, at set-up.
 void prepareBoundary(BoundaryParticles& boundary, const FluidParameters& params);
 
-// Reads position, boundary. Writes density and pressure (seed 1 Algorithm 1).
+// Reads position, boundary. Writes density, pressure, pressureState and the neighbour lists
+// (seed 1 Algorithm 1).
 void computeDensityAndPressure(FluidParticles& fluid, const Grid& grid,
                                const BoundaryParticles& boundary, const FluidParameters& params);
 
-// Reads position, velocity, density, pressure, boundary, externalById. Writes acceleration:
+// Reads position, velocity, pressureState, neighbour lists, boundary, externalById. Writes
+// acceleration:
 // pressure, viscosity, surface tension, gravity and external forces in one pass (seed 1
 // Algorithm 2), and |∇c|.
 void computeForces(FluidParticles& fluid, const Grid& grid, const BoundaryParticles& boundary,

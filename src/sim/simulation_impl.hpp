@@ -11,6 +11,7 @@
 #include "fluid/stages.hpp"
 #include "sim/calibration.hpp"
 #include "sim/sampling.hpp"
+#include "sph/core/kernels.hpp"
 #include "sph/core/time_step.hpp"
 #include "sph/error.hpp"
 #include "sph/simulation.hpp"
@@ -74,6 +75,13 @@ struct Simulation::Impl {
     for (auto* b : {&fluid.id, &fluid.cell, &fluid.order, &fluid.scratchId}) b->resize(n);
     fluid.density.resize(n);
     fluid.pressure.resize(n);
+    fluid.pressureState.resize(n);
+    // Twice the neighbours of a particle in the initial lattice leaves room for compression.
+    const double ratio = scene.fluid.supportRatio;
+    fluid.neighborStride =
+        static_cast<std::uint32_t>(std::ceil(2.0 * 4.0 / 3.0 * kPi * ratio * ratio * ratio));
+    fluid.neighbors.resize(n * fluid.neighborStride);
+    fluid.neighborCount.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       fluid.position[i] = makeVec4(fluidPoints[i]);
       fluid.velocity[i] = makeVec4(fluidVelocities[i]);

@@ -25,16 +25,24 @@ void expectOpposite(Vec3 a, Vec3 b) {
 TEST(Momentum, PressureFormsAreAntisymmetric) {
   const Vec3 rij = kXi - kXj;
   const float pi = 300.0f, pj = 120.0f, rhoi = 1003.0f, rhoj = 1001.0f, m = 0.008f;
-  expectOpposite(pressureAccelerationSymmetric(m, pi, rhoi, pj, rhoj, gradW(rij)),
-                 pressureAccelerationSymmetric(m, pj, rhoj, pi, rhoi, gradW(-rij)));
-  expectOpposite(pressureAccelerationPaper(m, pi, rhoi, pj, rhoj, gradW(rij)),
-                 pressureAccelerationPaper(m, pj, rhoj, pi, rhoi, gradW(-rij)));
+  const float ti = pressureOverDensitySquared(pi, rhoi), tj = pressureOverDensitySquared(pj, rhoj);
+  expectOpposite(pressureAccelerationSymmetric(m, ti, tj, gradW(rij)),
+                 pressureAccelerationSymmetric(m, tj, ti, gradW(-rij)));
+  expectOpposite(pressureAccelerationPaper(m, pi, 1.0f / rhoi, pj, 1.0f / rhoj, gradW(rij)),
+                 pressureAccelerationPaper(m, pj, 1.0f / rhoj, pi, 1.0f / rhoi, gradW(-rij)));
+  // The symmetric form is seed 2's p_i/ρ_i² + p_j/ρ_j²; the paper's is (p_i+p_j)/(2ρ_iρ_j).
+  const Vec3 g = gradW(rij);
+  const Vec3 sym = pressureAccelerationSymmetric(m, ti, tj, g);
+  EXPECT_NEAR(sym.x, -m * (pi / (rhoi * rhoi) + pj / (rhoj * rhoj)) * g.x, 1e-6f * std::abs(sym.x));
+  const Vec3 paper = pressureAccelerationPaper(m, pi, 1.0f / rhoi, pj, 1.0f / rhoj, g);
+  EXPECT_NEAR(paper.x, -m * (pi + pj) / (2 * rhoi * rhoj) * g.x, 1e-6f * std::abs(paper.x));
 }
 
 TEST(Momentum, PressureRepels) {
   const Vec3 rij = kXi - kXj;
   const Vec3 a =
-      pressureAccelerationSymmetric(0.008f, 300.0f, 1000.0f, 300.0f, 1000.0f, gradW(rij));
+      pressureAccelerationSymmetric(0.008f, pressureOverDensitySquared(300.0f, 1000.0f),
+                                    pressureOverDensitySquared(300.0f, 1000.0f), gradW(rij));
   EXPECT_GT(dot(a, rij), 0.0f);  // pushes i away from j
 }
 
@@ -66,7 +74,8 @@ TEST(Momentum, BoundaryPressurePushesAwayFromWall) {
   EXPECT_GT(a.y, 0.0f);
   // A mirror particle at the same pressure pushes exactly as a fluid neighbour would.
   const Vec3 fluid =
-      pressureAccelerationSymmetric(0.008f, 500.0f, 1000.0f, 500.0f, 1000.0f, gradW(rib));
+      pressureAccelerationSymmetric(0.008f, pressureOverDensitySquared(500.0f, 1000.0f),
+                                    pressureOverDensitySquared(500.0f, 1000.0f), gradW(rib));
   EXPECT_FLOAT_EQ(a.y, fluid.y);
 }
 

@@ -7,18 +7,21 @@
 
 namespace sph {
 
-// Seed 2's symmetric form: -m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W.
-SPH_HD Vec3 pressureAccelerationSymmetric(float massJ, float pressureI, float densityI,
-                                          float pressureJ, float densityJ, Vec3 gradW) {
-  const float s = pressureI / (densityI * densityI) + pressureJ / (densityJ * densityJ);
-  return gradW * (-massJ * s);
+// The per-particle factor of the symmetric form, p/ρ², computed once per particle.
+SPH_HD float pressureOverDensitySquared(float pressure, float density) {
+  return pressure / (density * density);
+}
+
+// Seed 2's symmetric form: -m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W, from the per-particle factors.
+SPH_HD Vec3 pressureAccelerationSymmetric(float massJ, float pOverRho2I, float pOverRho2J,
+                                          Vec3 gradW) {
+  return gradW * (-massJ * (pOverRho2I + pOverRho2J));
 }
 
 // Seed 1 eq. 6 divided by ρ_i: -m_j (p_i + p_j) / (2 ρ_i ρ_j) ∇W.
-SPH_HD Vec3 pressureAccelerationPaper(float massJ, float pressureI, float densityI, float pressureJ,
-                                      float densityJ, Vec3 gradW) {
-  const float s = (pressureI + pressureJ) / (2.0f * densityI * densityJ);
-  return gradW * (-massJ * s);
+SPH_HD Vec3 pressureAccelerationPaper(float massJ, float pressureI, float inverseDensityI,
+                                      float pressureJ, float inverseDensityJ, Vec3 gradW) {
+  return gradW * (-0.5f * massJ * (pressureI + pressureJ) * inverseDensityI * inverseDensityJ);
 }
 
 // A wall particle acts as a mirror of the fluid particle (Akinci et al. 2012: mass ρ0 ψ_b,
