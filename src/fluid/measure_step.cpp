@@ -56,7 +56,7 @@ BadParticle findBadParticle(const FluidParticles& fluid, float restDensity, floa
     } else if (!isFinite(v)) {
       here = {true, fluid.id[i], "velocity", length(v)};
     } else if (densityError(rho, restDensity) > maxDensityError) {
-      here = {true, fluid.id[i], "compression rho/rho0 - 1", densityError(rho, restDensity)};
+      here = {true, fluid.id[i], "compression rho/rho0 - 1", densityError(rho, restDensity), true};
     }
     if (here.found && (!bad.found || here.id < bad.id)) bad = here;
   }

@@ -45,6 +45,7 @@ struct BadParticle {
   std::uint32_t id = 0;
   const char* quantity = "";
   float value = 0.0f;
+  bool pastBound = false;  // finite, but compressed past the bound
 };
 BadParticle findBadParticle(const FluidParticles& fluid, float restDensity, float maxDensityError);
 

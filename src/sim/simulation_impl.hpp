@@ -51,58 +51,65 @@ struct Simulation::Impl {
     domain = sim::domainParameters(scene);
     dt = calibration.initialDt;
 
-    std::vector<Vec3> fluidPoints, fluidVelocities;
-    for (const auto& block : scene.fluid.blocks) {
-      auto points = sim::sampleBlock(block.box, scene.fluid.spacing);
-      if (block.hydrostatic)
-        sim::compressHydrostatically(points, block.box, scene.gravity, calibration.soundSpeed);
-      const Vec3 v{float(block.velocity[0]), float(block.velocity[1]), float(block.velocity[2])};
-      fluidPoints.insert(fluidPoints.end(), points.begin(), points.end());
-      fluidVelocities.insert(fluidVelocities.end(), points.size(), v);
-    }
-    std::vector<Vec3> wallPoints;
-    for (const auto& tank : scene.walls) {
-      const auto points = sim::sampleTank(tank, scene.fluid.spacing, scene.gravity);
-      wallPoints.insert(wallPoints.end(), points.begin(), points.end());
-    }
+    placeFluid();
+    placeWalls();
     grid.cellSize = params.h;
+    calibration.fluidParticles = initialFluid;
+    calibration.boundaryParticles = boundary.count;
+    // Density and pressure of the initial state, so stats and frame 0 are meaningful.
+    removed += fluid::buildGrid(fluid, grid, domain);
+    fluid::computeDensityAndPressure(fluid, grid, boundary, params);
+  }
 
-    const std::size_t n = fluidPoints.size();
+  // Samples the fluid blocks and sizes every per-particle array.
+  void placeFluid() {
+    std::vector<Vec3> points, velocities;
+    for (const auto& block : scene.fluid.blocks) {
+      auto blockPoints = sim::sampleBlock(block.box, scene.fluid.spacing);
+      if (block.hydrostatic)
+        sim::compressHydrostatically(blockPoints, block.box, scene.gravity, calibration.soundSpeed);
+      const Vec3 v{float(block.velocity[0]), float(block.velocity[1]), float(block.velocity[2])};
+      points.insert(points.end(), blockPoints.begin(), blockPoints.end());
+      velocities.insert(velocities.end(), blockPoints.size(), v);
+    }
+    const std::size_t n = points.size();
     initialFluid = n;
     fluid.count = n;
-    for (auto* b : {&fluid.position, &fluid.velocity, &fluid.acceleration, &fluid.scratch4})
+    for (auto* b : {&fluid.position, &fluid.velocity, &fluid.acceleration, &fluid.scratch4,
+                    &fluid.pressureState})
       b->resize(n);
-    for (auto* b : {&fluid.id, &fluid.cell, &fluid.order, &fluid.scratchId}) b->resize(n);
+    for (auto* b : {&fluid.id, &fluid.cell, &fluid.order, &fluid.scratchId, &fluid.neighborCount})
+      b->resize(n);
     fluid.density.resize(n);
     fluid.pressure.resize(n);
-    fluid.pressureState.resize(n);
     // Twice the neighbours of a particle in the initial lattice leaves room for compression.
     const double ratio = scene.fluid.supportRatio;
     fluid.neighborStride =
         static_cast<std::uint32_t>(std::ceil(2.0 * 4.0 / 3.0 * kPi * ratio * ratio * ratio));
     fluid.neighbors.resize(n * fluid.neighborStride);
-    fluid.neighborCount.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      fluid.position[i] = makeVec4(fluidPoints[i]);
-      fluid.velocity[i] = makeVec4(fluidVelocities[i]);
+      fluid.position[i] = makeVec4(points[i]);
+      fluid.velocity[i] = makeVec4(velocities[i]);
       fluid.acceleration[i] = Vec4{0, 0, 0, 0};
       fluid.id[i] = static_cast<std::uint32_t>(i);
     }
+  }
 
-    boundary.count = wallPoints.size();
+  // Samples the tanks' walls; their ids follow the fluid's.
+  void placeWalls() {
+    std::vector<Vec3> points;
+    for (const auto& tank : scene.walls) {
+      const auto tankPoints = sim::sampleTank(tank, scene.fluid.spacing, scene.gravity);
+      points.insert(points.end(), tankPoints.begin(), tankPoints.end());
+    }
+    boundary.count = points.size();
     boundary.position.resize(boundary.count);
     boundary.id.resize(boundary.count);
     for (std::size_t b = 0; b < boundary.count; ++b) {
-      boundary.position[b] = makeVec4(wallPoints[b]);
-      boundary.id[b] = static_cast<std::uint32_t>(n + b);
+      boundary.position[b] = makeVec4(points[b]);
+      boundary.id[b] = static_cast<std::uint32_t>(initialFluid + b);
     }
     fluid::prepareBoundary(boundary, params);
-
-    calibration.fluidParticles = n;
-    calibration.boundaryParticles = boundary.count;
-    // Density and pressure of the initial state, so stats and frame 0 are meaningful.
-    removed += fluid::buildGrid(fluid, grid, domain);
-    fluid::computeDensityAndPressure(fluid, grid, boundary, params);
   }
 
   double chooseTimeStep(double until) {
@@ -131,8 +138,7 @@ struct Simulation::Impl {
     std::ostringstream message;
     message << "simulation failed at step " << steps << " (t = " << time << " s): particle "
             << bad.id << ": " << bad.quantity << " = " << bad.value;
-    if (std::string(bad.quantity).find("error") != std::string::npos)
-      message << " exceeds failure.max_density_error = " << bound;
+    if (bad.pastBound) message << ", past failure.max_density_error = " << bound;
     throw SimulationFailure(message.str(), steps, bad.id, bad.quantity);
   }
 };
