@@ -9,6 +9,7 @@
 
 #include "backend/cpu_parallel.hpp"
 #include "commands.hpp"
+#include "io/scene_loader.hpp"
 #include "report.hpp"
 #include "sph/box_drop_scene.hpp"
 #include "sph/simulation.hpp"
@@ -36,6 +37,37 @@ struct StageSamples {
   }
 };
 
+// Times `steps` steps after `warmup`; one row of the table.
+nlohmann::json timeScene(const std::string& label, const Scene& scene,
+                         const BenchOptions& options) {
+  Simulation sim(scene);
+  for (int i = 0; i < options.warmupSteps; ++i) sim.step();
+  StageSamples samples;
+  for (int i = 0; i < options.steps; ++i) {
+    sim.step();
+    samples.add(sim.lastProfile());
+  }
+  const double step = median(samples.total);
+  const double n = double(sim.fluidCount());
+  const double rate = step > 0 ? n * 1000.0 / step : 0.0;
+  std::printf("%-18s %10.0f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %14.3e\n", label.c_str(), n, step,
+              median(samples.buildGrid), median(samples.densityPressure), median(samples.forces),
+              median(samples.timeStep), median(samples.integrate), rate);
+  std::fflush(stdout);
+  return {{"scene", label},
+          {"particles", sim.fluidCount()},
+          {"ms_per_step", step},
+          {"build_grid_ms", median(samples.buildGrid)},
+          {"density_pressure_ms", median(samples.densityPressure)},
+          {"forces_ms", median(samples.forces)},
+          {"time_step_ms", median(samples.timeStep)},
+          {"integrate_ms", median(samples.integrate)},
+          {"particle_steps_per_second", rate},
+          {"simulated_seconds_per_step", sim.time() / double(sim.stepCount())},
+          // Simulated seconds per wall second over the timed steps' median.
+          {"real_time_factor", sim.time() / double(sim.stepCount()) / (step / 1000.0)}};
+}
+
 }  // namespace
 
 int benchCommand(const BenchOptions& options) {
@@ -45,38 +77,19 @@ int benchCommand(const BenchOptions& options) {
       "sph bench: box drop, backend %s, %d threads, %d warm-up + %d timed steps; "
       "median ms per step\n",
       backendName(), backend::threadCount(), options.warmupSteps, options.steps);
-  std::printf("%10s %9s %9s %9s %9s %9s %9s %14s\n", "particles", "step", "grid", "density",
-              "forces", "dt", "integrate", "particle-steps/s");
+  std::printf("%-18s %10s %9s %9s %9s %9s %9s %9s %14s\n", "scene", "particles", "step", "grid",
+              "density", "forces", "dt", "integrate", "particle-steps/s");
   nlohmann::json results = nlohmann::json::array();
-  for (int size : options.sizes) {
-    Simulation sim(boxDropScene(size));
-    for (int i = 0; i < options.warmupSteps; ++i) sim.step();
-    StageSamples samples;
-    for (int i = 0; i < options.steps; ++i) {
-      sim.step();
-      samples.add(sim.lastProfile());
-    }
-    const double step = median(samples.total);
-    const double n = double(sim.fluidCount());
-    const double rate = step > 0 ? n * 1000.0 / step : 0.0;
-    std::printf("%10.0f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %14.3e\n", n, step,
-                median(samples.buildGrid), median(samples.densityPressure), median(samples.forces),
-                median(samples.timeStep), median(samples.integrate), rate);
-    std::fflush(stdout);
-    results.push_back({{"particles", sim.fluidCount()},
-                       {"ms_per_step", step},
-                       {"build_grid_ms", median(samples.buildGrid)},
-                       {"density_pressure_ms", median(samples.densityPressure)},
-                       {"forces_ms", median(samples.forces)},
-                       {"time_step_ms", median(samples.timeStep)},
-                       {"integrate_ms", median(samples.integrate)},
-                       {"particle_steps_per_second", rate}});
+  for (int size : options.sizes)
+    results.push_back(timeScene("box_drop", boxDropScene(size), options));
+  for (const std::string& path : options.scenes) {
+    const Scene scene = io::loadScene(path, options.overrides);
+    results.push_back(timeScene(scene.name, scene, options));
   }
   if (!options.json.empty()) {
     std::ofstream out(options.json);
     out << nlohmann::json{{"backend", backendName()},
                           {"threads", backend::threadCount()},
-                          {"scene", "box_drop"},
                           {"results", results}}
                .dump(2)
         << '\n';

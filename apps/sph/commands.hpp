@@ -25,6 +25,8 @@ struct BenchOptions {
   int threads = 0;
   int warmupSteps = 20;
   int steps = 50;
+  std::vector<std::string> scenes;  // also time these scene files
+  std::vector<std::string> overrides;
   std::string json;  // also write the results here
 };
 

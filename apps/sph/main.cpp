@@ -46,6 +46,8 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--threads", bench.threads, "CPU threads (default: all)");
   benchCmd->add_option("--warmup", bench.warmupSteps, "Steps before timing");
   benchCmd->add_option("--steps", bench.steps, "Timed steps per size")->check(CLI::PositiveNumber);
+  benchCmd->add_option("--scene", bench.scenes, "Also time this scene file (repeatable)");
+  benchCmd->add_option("--set", bench.overrides, "Override a key of the --scene files")->take_all();
   benchCmd->add_option("--json", bench.json, "Also write the results as JSON to this file");
 
   auto dispatch = [&]() -> int {

@@ -19,7 +19,11 @@ struct Result {
 };
 
 Result runSph(const std::string& arguments) {
-  const fs::path log = fs::path(::testing::TempDir()) / "sph_cli_output.txt";
+  // One log per test: ctest runs tests of this file in parallel processes.
+  const fs::path log =
+      fs::path(::testing::TempDir()) /
+      ("sph_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+       ".log");
   const std::string command =
       std::string(SPH_BINARY) + " " + arguments + " > " + log.string() + " 2>&1";
   const int status = std::system(command.c_str());
