@@ -1,6 +1,7 @@
 #include "report.hpp"
 
 #include "backend/cpu_parallel.hpp"
+#include "io/frame_writer.hpp"
 
 namespace sph::cli {
 
@@ -84,16 +85,8 @@ const char* backendName() {
 }
 
 const char* formatName(FrameFormat format) {
-  switch (format) {
-    case FrameFormat::Vtp:
-      return "vtp";
-    case FrameFormat::Ply:
-      return "ply";
-    case FrameFormat::Csv:
-      return "csv";
-    default:
-      return "none";
-  }
+  const char* extension = io::frameExtension(format);
+  return *extension ? extension : "none";
 }
 
 }  // namespace sph::cli
