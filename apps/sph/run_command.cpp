@@ -47,6 +47,7 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
       {"ms_per_step", steps > 0 ? 1000.0 * record.wallSeconds / steps : 0.0},
       {"real_time_factor", record.wallSeconds > 0 ? sim.time() / record.wallSeconds : 0.0},
       {"removed_count", sim.removedCount()},
+      {"clamped_count", sim.clampedCount()},
       {"final", statsJson(sim.stats())},
       {"scene", io::sceneToJson(sim.scene())}};
   io::writeFileAtomically(output.dir() / "summary.json",

@@ -26,7 +26,7 @@ struct Calibration {
   double stiffness = 0.0;           // k or B of the equation of state
   double kinematicViscosity = 0.0;  // ν used by the viscous time step condition, m²/s
   double initialDt = 0.0;           // s
-  double surfaceThreshold = 0.0;  // |∇c| of a surface particle, 1/m
+  double surfaceThreshold = 0.0;    // |∇c| of a surface particle, 1/m
   bool massFromScene = false;
   bool maxExpectedSpeedFromScene = false;
   bool soundSpeedFromScene = false;
@@ -69,6 +69,8 @@ class Simulation {
   std::uint64_t stepCount() const;
   double lastDt() const;
   std::uint64_t removedCount() const;  // fluid particles that left the domain
+  // Times the scene's "clamp" policy put a particle back into the domain (particle-steps).
+  std::uint64_t clampedCount() const;
   std::uint64_t fluidCount() const;
   const Scene& scene() const;
   const Calibration& calibration() const;

@@ -18,19 +18,23 @@ SPH_HD void reflect(float& x, float& v, float lo, float hi, float damping) {
 }
 
 // The scene's "clamp" policy: a particle past a face is put back on it and stops moving out.
-SPH_HD void clamp(float& x, float& v, float lo, float hi) {
+SPH_HD bool clamp(float& x, float& v, float lo, float hi) {
   if (x < lo) {
     x = lo;
     if (v < 0.0f) v = 0.0f;
-  } else if (x > hi) {
+    return true;
+  }
+  if (x > hi) {
     x = hi;
     if (v > 0.0f) v = 0.0f;
+    return true;
   }
+  return false;
 }
 
 }  // namespace
 
-void integrate(FluidParticles& fluid, float dt, const DomainParameters& domain) {
+std::size_t integrate(FluidParticles& fluid, float dt, const DomainParameters& domain) {
   Vec4* position = fluid.position.data();
   Vec4* velocity = fluid.velocity.data();
   const Vec4* acceleration = fluid.acceleration.data();
@@ -44,14 +48,20 @@ void integrate(FluidParticles& fluid, float dt, const DomainParameters& domain) 
           reflect(x.x, v.x, d.min.x, d.max.x, d.damping);
           reflect(x.y, v.y, d.min.y, d.max.y, d.damping);
           reflect(x.z, v.z, d.min.z, d.max.z, d.damping);
-        } else if (d.clampOutside) {
-          clamp(x.x, v.x, d.min.x, d.max.x);
-          clamp(x.y, v.y, d.min.y, d.max.y);
-          clamp(x.z, v.z, d.min.z, d.max.z);
         }
-        velocity[i] = makeVec4(v);
+        bool clamped = false;
+        if (d.clampOutside && !d.dampedBox) {
+          clamped = clamp(x.x, v.x, d.min.x, d.max.x);
+          clamped = clamp(x.y, v.y, d.min.y, d.max.y) || clamped;
+          clamped = clamp(x.z, v.z, d.min.z, d.max.z) || clamped;
+        }
+        velocity[i] = makeVec4(v, clamped ? 1.0f : 0.0f);  // w: clamped this step
         position[i] = makeVec4(x);
       });
+  if (!d.clampOutside || d.dampedBox) return 0;
+  return backend::reduce(
+      fluid.count, std::size_t{0}, SPH_LAMBDA(std::size_t i) { return std::size_t(velocity[i].w); },
+      SPH_LAMBDA(std::size_t a, std::size_t b) { return a + b; });
 }
 
 }  // namespace sph::fluid

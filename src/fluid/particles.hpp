@@ -16,7 +16,7 @@ struct FluidParticles {
   std::size_t count = 0;
   // state, reordered by buildGrid (n)
   Buffer<Vec4> position;     // xyz, w unused
-  Buffer<Vec4> velocity;     // xyz, w unused
+  Buffer<Vec4> velocity;     // xyz; w = 1 if the clamp policy put the particle back this step
   Buffer<std::uint32_t> id;  // stable particle id
   // computed by computeDensityAndPressure (n)
   Buffer<float> density;

@@ -50,7 +50,7 @@ struct BadParticle {
 BadParticle findBadParticle(const FluidParticles& fluid, float restDensity, float maxDensityError);
 
 // Symplectic Euler: v += dt a, then x += dt v; then the seed's damped box, or the clamp
-// policy, keeps particles in the domain.
-void integrate(FluidParticles& fluid, float dt, const DomainParameters& domain);
+// policy, keeps particles in the domain. Returns how many the clamp put back.
+std::size_t integrate(FluidParticles& fluid, float dt, const DomainParameters& domain);
 
 }  // namespace sph::fluid

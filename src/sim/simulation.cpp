@@ -21,7 +21,8 @@ void Simulation::step(double until) {
   profile.forces = timedMs([&] { fluid::computeForces(s.fluid, s.grid, s.boundary, s.params); });
   // The interaction with objects (seed 1 §7) goes here.
   profile.timeStep = timedMs([&] { s.dt = s.chooseTimeStep(until); });
-  profile.integrate = timedMs([&] { fluid::integrate(s.fluid, float(s.dt), s.domain); });
+  profile.integrate =
+      timedMs([&] { s.clamped += fluid::integrate(s.fluid, float(s.dt), s.domain); });
   s.time = (s.dt == until - s.time) ? until : s.time + s.dt;
   ++s.steps;
 }
@@ -57,6 +58,9 @@ double Simulation::lastDt() const {
 }
 std::uint64_t Simulation::removedCount() const {
   return impl_->removed;
+}
+std::uint64_t Simulation::clampedCount() const {
+  return impl_->clamped;
 }
 std::uint64_t Simulation::fluidCount() const {
   return impl_->fluid.count;

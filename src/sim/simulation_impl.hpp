@@ -43,6 +43,7 @@ struct Simulation::Impl {
   double dt = 0.0;
   std::uint64_t steps = 0;
   std::uint64_t removed = 0;
+  std::uint64_t clamped = 0;
   std::uint64_t initialFluid = 0;
 
   explicit Impl(const Scene& s) : scene(s) {

@@ -60,6 +60,7 @@ TEST(Mass, ClampKeepsEveryParticleInside) {
   sim.advanceTo(0.1);
   EXPECT_EQ(sim.removedCount(), 0u);
   EXPECT_EQ(sim.fluidCount(), n0);
+  EXPECT_GT(sim.clampedCount(), 0u) << "the clamps are counted";
   const ParticleFrame f = sim.frame(false);
   for (std::size_t i = 0; i < f.size(); ++i) {
     EXPECT_GE(f.position[3 * i + 1], 0.0f);
