@@ -3,6 +3,7 @@
 
 #include "backend/cpu_parallel.hpp"
 #include "commands.hpp"
+#include "sph/devices.hpp"
 
 #ifndef SPH_VERSION
 #define SPH_VERSION "unknown"
@@ -14,13 +15,21 @@
 namespace sph::cli {
 
 bool checkBackend(const std::string& backend) {
-  if (backend == "cuda") {
+  if (backend != "cuda") return true;
+  const GpuReport gpus = queryGpus();
+  if (!gpus.cudaBuilt) {
+    std::fprintf(stderr, "error: --backend cuda: %s; use --backend cpu or auto\n",
+                 gpus.reason.c_str());
+  } else if (gpus.devices.empty()) {
+    std::fprintf(stderr, "error: --backend cuda: no GPU: %s; use --backend cpu or auto\n",
+                 gpus.reason.c_str());
+  } else {
     std::fprintf(stderr,
-                 "error: --backend cuda: this sph was built without the CUDA backend; use "
-                 "--backend cpu or auto (see `sph info`)\n");
-    return false;
+                 "error: --backend cuda: this version runs the fluid stages on the CPU only; "
+                 "the CUDA primitives are built but the GPU engine is not yet; use --backend "
+                 "cpu or auto\n");
   }
-  return true;
+  return false;
 }
 
 int infoCommand() {
@@ -31,8 +40,21 @@ int infoCommand() {
 #else
   std::printf("  cpu   serial (built without OpenMP)\n");
 #endif
-  std::printf("  cuda  not built in this binary (configure with -DSPH_WITH_CUDA=ON)\n");
-  std::printf("devices: no GPU is used by this binary\n");
+  const GpuReport gpus = queryGpus();
+  if (!gpus.cudaBuilt) {
+    std::printf("  cuda  not built: %s\n", gpus.reason.c_str());
+  } else {
+    std::printf("  cuda  primitives built (the fluid stages run on the CPU in this version)\n");
+  }
+  std::printf("devices:\n");
+  if (gpus.devices.empty()) {
+    std::printf("  no GPU: %s\n", gpus.reason.c_str());
+  }
+  for (const GpuDevice& d : gpus.devices) {
+    std::printf("  [%d] %s, compute capability %d.%d, %d SMs, %.1f GiB (%.1f GiB free)\n",
+                d.index, d.name.c_str(), d.computeMajor, d.computeMinor, d.multiprocessors,
+                double(d.totalMemory) / (1 << 30), double(d.freeMemory) / (1 << 30));
+  }
   return kExitOk;
 }
 
