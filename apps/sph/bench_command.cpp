@@ -12,6 +12,7 @@
 #include "io/scene_loader.hpp"
 #include "report.hpp"
 #include "sph/box_drop_scene.hpp"
+#include "sph/devices.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::cli {
@@ -39,8 +40,8 @@ struct StageSamples {
 
 // Times `steps` steps after `warmup`; one row of the table.
 nlohmann::json timeScene(const std::string& label, const Scene& scene,
-                         const BenchOptions& options) {
-  Simulation sim(scene);
+                         const SimulationOptions& where, const BenchOptions& options) {
+  Simulation sim(scene, where);
   for (int i = 0; i < options.warmupSteps; ++i) sim.step();
   StageSamples samples;
   for (int i = 0; i < options.steps; ++i) {
@@ -71,24 +72,27 @@ nlohmann::json timeScene(const std::string& label, const Scene& scene,
 }  // namespace
 
 int benchCommand(const BenchOptions& options) {
-  if (!checkBackend(options.backend)) return kExitBadInput;
   backend::setThreadCount(options.threads);
+  const SimulationOptions where = simulationOptions(options.backend, options.device);
+  const bool gpu = where.backend == Backend::Cuda ||
+                   (where.backend == Backend::Auto && !queryGpus().devices.empty());
+  const char* backendName = gpu ? "cuda" : "cpu";
   std::printf(
       "sph bench: box drop, backend %s, %d threads, %d warm-up + %d timed steps; "
       "median ms per step\n",
-      backendName(), backend::threadCount(), options.warmupSteps, options.steps);
+      backendName, backend::threadCount(), options.warmupSteps, options.steps);
   std::printf("%-18s %10s %9s %9s %9s %9s %9s %9s %14s\n", "scene", "particles", "step", "grid",
               "density", "forces", "dt", "integrate", "particle-steps/s");
   nlohmann::json results = nlohmann::json::array();
   for (int size : options.sizes)
-    results.push_back(timeScene("box_drop", boxDropScene(size), options));
+    results.push_back(timeScene("box_drop", boxDropScene(size), where, options));
   for (const std::string& path : options.scenes) {
     const Scene scene = io::loadScene(path, options.overrides);
-    results.push_back(timeScene(scene.name, scene, options));
+    results.push_back(timeScene(scene.name, scene, where, options));
   }
   if (!options.json.empty()) {
     std::ofstream out(options.json);
-    out << nlohmann::json{{"backend", backendName()},
+    out << nlohmann::json{{"backend", backendName},
                           {"threads", backend::threadCount()},
                           {"results", results}}
                .dump(2)

@@ -2,8 +2,11 @@
 // 0 done, 2 bad input, 3 the simulation failed.
 #pragma once
 
+#include <cstdio>
 #include <string>
 #include <vector>
+
+#include "sph/simulation.hpp"
 
 namespace sph::cli {
 
@@ -14,6 +17,7 @@ struct RunOptions {
   std::string out;  // default: out/<scene name>
   std::string backend = "auto";
   int threads = 0;  // 0: all hardware threads
+  int device = 0;   // CUDA device
   std::vector<std::string> overrides;
   bool force = false;
   bool quiet = false;
@@ -23,6 +27,7 @@ struct BenchOptions {
   std::vector<int> sizes{4096, 16384, 65536, 262144};
   std::string backend = "auto";
   int threads = 0;
+  int device = 0;
   int warmupSteps = 20;
   int steps = 50;
   std::vector<std::string> scenes;  // also time these scene files
@@ -35,8 +40,12 @@ int validateCommand(const std::string& scene, const std::vector<std::string>& ov
 int infoCommand();
 int benchCommand(const BenchOptions& options);
 
-// "auto" and "cpu" are served; "cuda" is refused with a clear message while the CUDA backend is
-// not built. Returns false and prints why when the backend cannot be used.
-bool checkBackend(const std::string& backend);
+// The options that choose where a Simulation runs. "cuda" without a usable GPU makes the
+// Simulation throw an InputError that says why; "auto" takes the GPU when there is one.
+SimulationOptions simulationOptions(const std::string& backend, int device);
+
+// One line per GPU: name, compute capability, memory (total and free), for `sph info` and
+// the start of a GPU run.
+void printGpus(std::FILE* out);
 
 }  // namespace sph::cli

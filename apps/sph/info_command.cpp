@@ -14,22 +14,22 @@
 
 namespace sph::cli {
 
-bool checkBackend(const std::string& backend) {
-  if (backend != "cuda") return true;
+SimulationOptions simulationOptions(const std::string& backend, int device) {
+  SimulationOptions options;
+  options.backend =
+      backend == "cuda" ? Backend::Cuda : (backend == "cpu" ? Backend::Cpu : Backend::Auto);
+  options.device = device;
+  return options;
+}
+
+void printGpus(std::FILE* out) {
   const GpuReport gpus = queryGpus();
-  if (!gpus.cudaBuilt) {
-    std::fprintf(stderr, "error: --backend cuda: %s; use --backend cpu or auto\n",
-                 gpus.reason.c_str());
-  } else if (gpus.devices.empty()) {
-    std::fprintf(stderr, "error: --backend cuda: no GPU: %s; use --backend cpu or auto\n",
-                 gpus.reason.c_str());
-  } else {
-    std::fprintf(stderr,
-                 "error: --backend cuda: this version runs the fluid stages on the CPU only; "
-                 "the CUDA primitives are built but the GPU engine is not yet; use --backend "
-                 "cpu or auto\n");
+  if (gpus.devices.empty()) std::fprintf(out, "  no GPU: %s\n", gpus.reason.c_str());
+  for (const GpuDevice& d : gpus.devices) {
+    std::fprintf(out, "  [%d] %s, compute capability %d.%d, %d SMs, %.1f GiB (%.1f GiB free)\n",
+                 d.index, d.name.c_str(), d.computeMajor, d.computeMinor, d.multiprocessors,
+                 double(d.totalMemory) / (1 << 30), double(d.freeMemory) / (1 << 30));
   }
-  return false;
 }
 
 int infoCommand() {
@@ -44,17 +44,10 @@ int infoCommand() {
   if (!gpus.cudaBuilt) {
     std::printf("  cuda  not built: %s\n", gpus.reason.c_str());
   } else {
-    std::printf("  cuda  primitives built (the fluid stages run on the CPU in this version)\n");
+    std::printf("  cuda  built (--backend cuda, or auto when a GPU is present)\n");
   }
   std::printf("devices:\n");
-  if (gpus.devices.empty()) {
-    std::printf("  no GPU: %s\n", gpus.reason.c_str());
-  }
-  for (const GpuDevice& d : gpus.devices) {
-    std::printf("  [%d] %s, compute capability %d.%d, %d SMs, %.1f GiB (%.1f GiB free)\n",
-                d.index, d.name.c_str(), d.computeMajor, d.computeMinor, d.multiprocessors,
-                double(d.totalMemory) / (1 << 30), double(d.freeMemory) / (1 << 30));
-  }
+  printGpus(stdout);
   return kExitOk;
 }
 

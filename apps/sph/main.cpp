@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"cpu", "cuda", "auto"}));
   runCmd->add_option("--threads", run.threads, "CPU threads (default: all)")
       ->check(CLI::NonNegativeNumber);
+  runCmd->add_option("--device", run.device, "CUDA device index (see sph info)")
+      ->check(CLI::NonNegativeNumber);
   runCmd->add_option("--duration", duration, "Simulated seconds (time.duration)");
   runCmd->add_option("--fps", fps, "Output frames per simulated second (output.fps)");
   runCmd->add_option("--format", format, "Frame format: vtp, ply, csv or none (output.format)")
@@ -44,6 +46,8 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--backend", bench.backend, "cpu, cuda or auto")
       ->check(CLI::IsMember({"cpu", "cuda", "auto"}));
   benchCmd->add_option("--threads", bench.threads, "CPU threads (default: all)");
+  benchCmd->add_option("--device", bench.device, "CUDA device index (see sph info)")
+      ->check(CLI::NonNegativeNumber);
   benchCmd->add_option("--warmup", bench.warmupSteps, "Steps before timing");
   benchCmd->add_option("--steps", bench.steps, "Timed steps per size")->check(CLI::PositiveNumber);
   benchCmd->add_option("--scene", bench.scenes, "Also time this scene file (repeatable)");

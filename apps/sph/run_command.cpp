@@ -36,7 +36,7 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
       {"status", record.failure.is_null() ? "completed" : "failed"},
       {"failure", record.failure},
       {"scene_file", sim.scene().sourcePath},
-      {"backend", backendName()},
+      {"backend", sim.backendName()},
       {"threads", backend::threadCount()},
       {"calibration", calibrationJson(sim.calibration())},
       {"simulated_time", sim.time()},
@@ -57,15 +57,19 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
 }  // namespace
 
 int runCommand(const RunOptions& options) {
-  if (!checkBackend(options.backend)) return kExitBadInput;
   backend::setThreadCount(options.threads);
   const Scene scene = io::loadScene(options.scene, options.overrides);
   const std::string dir = options.out.empty() ? "out/" + scene.name : options.out;
-  Simulation sim(scene);
+  Simulation sim(scene, simulationOptions(options.backend, options.device));
   RunOutput output(dir, scene.output.format, options.force);
   if (!options.quiet) {
     printCalibration(stdout, sim);
-    std::printf("  backend              %s, %d threads\n", backendName(), backend::threadCount());
+    if (std::string(sim.backendName()) == "cuda") {
+      std::printf("  backend              cuda, device %d\n", options.device);
+      printGpus(stdout);  // seed 2's memory report: what the GPU holds and has free
+    } else {
+      std::printf("  backend              cpu, %d threads\n", backend::threadCount());
+    }
     std::printf("writing %s frames at %g per second to %s\n", formatName(scene.output.format),
                 scene.output.fps, output.dir().c_str());
     std::fflush(stdout);

@@ -45,10 +45,18 @@ struct StepProfile {
   double total() const { return buildGrid + densityPressure + forces + timeStep + integrate; }
 };
 
+enum class Backend { Cpu, Cuda, Auto };  // Auto: the GPU when one is present
+
+struct SimulationOptions {
+  Backend backend = Backend::Cpu;
+  int device = 0;  // CUDA device index
+};
+
 class Simulation {
  public:
-  // Throws InputError if the scene cannot be simulated (e.g. no speed of sound derivable).
-  explicit Simulation(const Scene& scene);
+  // Throws InputError if the scene cannot be simulated (e.g. no speed of sound derivable) or
+  // the backend asked for is not available.
+  explicit Simulation(const Scene& scene, const SimulationOptions& options = {});
   ~Simulation();
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
@@ -72,6 +80,7 @@ class Simulation {
   // Times the scene's "clamp" policy put a particle back into the domain (particle-steps).
   std::uint64_t clampedCount() const;
   std::uint64_t fluidCount() const;
+  const char* backendName() const;  // "cpu" or "cuda"
   const Scene& scene() const;
   const Calibration& calibration() const;
   const StepProfile& lastProfile() const;

@@ -1,18 +1,22 @@
-// Particle arrays as structures of arrays, grouped by the stage that writes them.
+// Particle arrays as structures of arrays, grouped by the stage that writes them, in the
+// memory of backend B (host for the CPU backend, device for CUDA).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
-#include "backend/buffer.hpp"
 #include "sph/core/grid.hpp"
 #include "sph/core/vec.hpp"
 
 namespace sph::fluid {
 
-using backend::Buffer;
+constexpr std::uint32_t kNeighborOverflow = 0xffffffffu;
 
 // Fluid particles, reordered by cell every step so neighbour loops read memory in order.
+template <class B>
 struct FluidParticles {
+  template <class T>
+  using Buffer = typename B::template Buffer<T>;
   std::size_t count = 0;
   // state, reordered by buildGrid (n)
   Buffer<Vec4> position;     // xyz, w unused
@@ -40,10 +44,11 @@ struct FluidParticles {
   Buffer<std::uint32_t> scratchId;
 };
 
-constexpr std::uint32_t kNeighborOverflow = 0xffffffffu;
-
 // Static wall particles (Akinci et al. 2012), sorted by cell of their own grid once at set-up.
+template <class B>
 struct BoundaryParticles {
+  template <class T>
+  using Buffer = typename B::template Buffer<T>;
   std::size_t count = 0;
   GridSpec grid;                    // covers the walls with a cell to spare
   Buffer<Vec4> position;            // xyz; w = volume ψ_b, m³
@@ -54,10 +59,11 @@ struct BoundaryParticles {
 // The uniform grid over the fluid, rebuilt each step over the particles' bounding box (so an
 // empty corner of a large domain costs nothing): particles of cell c are
 // [cellStart[c], cellStart[c+1]). The extra last bin holds particles outside the domain.
+template <class B>
 struct Grid {
   float cellSize = 0.0f;  // h
   GridSpec spec;
-  Buffer<std::uint32_t> cellStart;  // cellCount + 2
+  typename B::template Buffer<std::uint32_t> cellStart;  // cellCount + 2
 };
 
 }  // namespace sph::fluid

@@ -7,30 +7,29 @@
 
 namespace sph {
 
-Simulation::Simulation(const Scene& scene) : impl_(std::make_unique<Impl>(scene)) {}
+Simulation::Simulation(const Scene& scene, const SimulationOptions& options)
+    : impl_(std::make_unique<Impl>(scene, options)) {}
 Simulation::~Simulation() = default;
 
 // Seed 1 §6, in our order: the forces of this step act on the positions they were computed at.
 void Simulation::step(double until) {
   Impl& s = *impl_;
+  sim::FluidEngine& engine = *s.engine;
   StepProfile& profile = s.profile;
   using detail::timedMs;
-  profile.buildGrid = timedMs([&] { s.removed += fluid::buildGrid(s.fluid, s.grid, s.domain); });
-  profile.densityPressure =
-      timedMs([&] { fluid::computeDensityAndPressure(s.fluid, s.grid, s.boundary, s.params); });
-  profile.forces = timedMs([&] { fluid::computeForces(s.fluid, s.grid, s.boundary, s.params); });
+  profile.buildGrid = timedMs([&] { s.removed += engine.buildGrid(); });
+  profile.densityPressure = timedMs([&] { engine.computeDensityAndPressure(); });
+  profile.forces = timedMs([&] { engine.computeForces(); });
   // The interaction with objects (seed 1 §7) goes here.
   profile.timeStep = timedMs([&] { s.dt = s.chooseTimeStep(until); });
-  profile.integrate =
-      timedMs([&] { s.clamped += fluid::integrate(s.fluid, float(s.dt), s.domain); });
+  profile.integrate = timedMs([&] { s.clamped += engine.integrate(float(s.dt)); });
   s.time = (s.dt == until - s.time) ? until : s.time + s.dt;
   ++s.steps;
 }
 
 void Simulation::setExternalAcceleration(const std::vector<float>& byId) {
-  fluid::FluidParticles& f = impl_->fluid;
   if (byId.empty()) {
-    f.externalById.resize(0);
+    impl_->engine->setExternalAcceleration({});
     return;
   }
   const std::size_t n = impl_->initialFluid;
@@ -38,9 +37,10 @@ void Simulation::setExternalAcceleration(const std::vector<float>& byId) {
     throw std::invalid_argument("setExternalAcceleration: expected 3 × " + std::to_string(n) +
                                 " values (x, y, z per fluid particle), got " +
                                 std::to_string(byId.size()));
-  f.externalById.resize(n);
+  std::vector<Vec4> accelerations(n);
   for (std::size_t i = 0; i < n; ++i)
-    f.externalById[i] = Vec4{byId[3 * i], byId[3 * i + 1], byId[3 * i + 2], 0.0f};
+    accelerations[i] = Vec4{byId[3 * i], byId[3 * i + 1], byId[3 * i + 2], 0.0f};
+  impl_->engine->setExternalAcceleration(accelerations);
 }
 
 void Simulation::advanceTo(double t) {
@@ -63,7 +63,10 @@ std::uint64_t Simulation::clampedCount() const {
   return impl_->clamped;
 }
 std::uint64_t Simulation::fluidCount() const {
-  return impl_->fluid.count;
+  return impl_->engine->fluidCount();
+}
+const char* Simulation::backendName() const {
+  return impl_->engine->backendName();
 }
 const Scene& Simulation::scene() const {
   return impl_->scene;

@@ -1,6 +1,8 @@
-// What a Simulation reports: statistics and frames, computed on demand at output times.
+// What a Simulation reports: statistics and frames, from a host copy of the particles, made
+// on demand at output times.
 #include <algorithm>
 
+#include "backend/cpu_parallel.hpp"
 #include "sim/simulation_impl.hpp"
 
 namespace sph {
@@ -14,47 +16,6 @@ struct Sums {
   float maxSpeedSquared = 0.0f;
   std::uint64_t surface = 0;
 };
-
-}  // namespace
-
-FrameStats Simulation::stats() const {
-  const Impl& s = *impl_;
-  const fluid::FluidParticles& f = s.fluid;
-  const float restDensity = s.params.restDensity;
-  const float threshold = s.params.surfaceThreshold;
-  const Sums sums = backend::reduce(
-      f.count, Sums{},
-      [&](std::size_t i) {
-        const float v2 = lengthSquared(xyz(f.velocity[i]));
-        const float error = std::max(f.density[i] / restDensity - 1.0f, 0.0f);
-        return Sums{0.5 * s.params.mass * v2, f.density[i], error, v2,
-                    f.acceleration[i].w > threshold ? 1u : 0u};
-      },
-      [](Sums a, const Sums& b) {
-        a.kineticEnergy += b.kineticEnergy;
-        a.density += b.density;
-        a.maxDensityError = std::max(a.maxDensityError, b.maxDensityError);
-        a.maxSpeedSquared = std::max(a.maxSpeedSquared, b.maxSpeedSquared);
-        a.surface += b.surface;
-        return a;
-      });
-  FrameStats out;
-  out.time = s.time;
-  out.steps = s.steps;
-  out.dt = s.dt;
-  out.fluidCount = f.count;
-  out.boundaryCount = s.boundary.count;
-  out.kineticEnergy = sums.kineticEnergy;
-  out.meanDensity = f.count ? sums.density / double(f.count) : 0.0;
-  out.maxDensityError = sums.maxDensityError;
-  out.maxSpeed = std::sqrt(double(sums.maxSpeedSquared));
-  out.surfaceCount = sums.surface;
-  out.leakedCount = 0;  // no objects yet hold fluid
-  out.removedCount = s.removed;
-  return out;
-}
-
-namespace {
 
 struct FrameBuilder {
   ParticleFrame out;
@@ -79,9 +40,9 @@ struct FrameBuilder {
 };
 
 // Fluid ids are 0 .. initialFluid-1 with gaps where particles were removed.
-void appendFluid(FrameBuilder& b, const fluid::FluidParticles& f, std::uint64_t initialFluid) {
+void appendFluid(FrameBuilder& b, const sim::HostParticles& f, std::uint64_t initialFluid) {
   std::vector<std::int64_t> slotOfId(initialFluid, -1);
-  for (std::size_t i = 0; i < f.count; ++i) slotOfId[f.id[i]] = static_cast<std::int64_t>(i);
+  for (std::size_t i = 0; i < f.id.size(); ++i) slotOfId[f.id[i]] = static_cast<std::int64_t>(i);
   for (std::int64_t slot : slotOfId) {
     if (slot < 0) continue;
     const auto i = static_cast<std::size_t>(slot);
@@ -90,24 +51,65 @@ void appendFluid(FrameBuilder& b, const fluid::FluidParticles& f, std::uint64_t 
 }
 
 // Wall ids follow the fluid's.
-void appendBoundary(FrameBuilder& b, const fluid::BoundaryParticles& w, std::uint64_t firstId,
-                    float restDensity) {
-  std::vector<std::size_t> byId(w.count);
-  for (std::size_t k = 0; k < w.count; ++k) byId[w.id[k] - firstId] = k;
+void appendWalls(FrameBuilder& b, const sim::HostWalls& w, std::uint64_t firstId,
+                 float restDensity) {
+  std::vector<std::size_t> byId(w.id.size());
+  for (std::size_t k = 0; k < w.id.size(); ++k) byId[w.id[k] - firstId] = k;
   for (std::size_t k : byId)
     b.push(w.id[k], w.position[k], Vec4{0, 0, 0, 0}, restDensity, 0.0f, ParticleKind::Boundary);
 }
 
 }  // namespace
 
+FrameStats Simulation::stats() const {
+  const Impl& s = *impl_;
+  const sim::HostParticles f = s.engine->download();
+  const float restDensity = s.params.restDensity;
+  const float threshold = s.params.surfaceThreshold;
+  const double mass = s.params.mass;
+  const Sums sums = backend::reduce(
+      f.id.size(), Sums{},
+      [&](std::size_t i) {
+        const float v2 = lengthSquared(xyz(f.velocity[i]));
+        const float error = std::max(f.density[i] / restDensity - 1.0f, 0.0f);
+        return Sums{0.5 * mass * v2, f.density[i], error, v2,
+                    f.acceleration[i].w > threshold ? 1u : 0u};
+      },
+      [](Sums a, const Sums& b) {
+        a.kineticEnergy += b.kineticEnergy;
+        a.density += b.density;
+        a.maxDensityError = std::max(a.maxDensityError, b.maxDensityError);
+        a.maxSpeedSquared = std::max(a.maxSpeedSquared, b.maxSpeedSquared);
+        a.surface += b.surface;
+        return a;
+      });
+  const std::size_t n = f.id.size();
+  FrameStats out;
+  out.time = s.time;
+  out.steps = s.steps;
+  out.dt = s.dt;
+  out.fluidCount = n;
+  out.boundaryCount = s.engine->wallCount();
+  out.kineticEnergy = sums.kineticEnergy;
+  out.meanDensity = n ? sums.density / double(n) : 0.0;
+  out.maxDensityError = sums.maxDensityError;
+  out.maxSpeed = std::sqrt(double(sums.maxSpeedSquared));
+  out.surfaceCount = sums.surface;
+  out.leakedCount = 0;  // no objects yet hold fluid
+  out.removedCount = s.removed;
+  return out;
+}
+
 ParticleFrame Simulation::frame(bool includeBoundary) const {
   const Impl& s = *impl_;
+  const sim::HostParticles f = s.engine->download();
   FrameBuilder b;
   b.out.time = s.time;
   b.out.step = s.steps;
-  b.reserve(s.fluid.count + (includeBoundary ? s.boundary.count : 0));
-  appendFluid(b, s.fluid, s.initialFluid);
-  if (includeBoundary) appendBoundary(b, s.boundary, s.initialFluid, s.params.restDensity);
+  b.reserve(f.id.size() + (includeBoundary ? s.engine->wallCount() : 0));
+  appendFluid(b, f, s.initialFluid);
+  if (includeBoundary)
+    appendWalls(b, s.engine->downloadWalls(), s.initialFluid, s.params.restDensity);
   return std::move(b.out);
 }
 
@@ -116,8 +118,8 @@ ParticleFrame Simulation::boundaryFrame() const {
   FrameBuilder b;
   b.out.time = s.time;
   b.out.step = s.steps;
-  b.reserve(s.boundary.count);
-  appendBoundary(b, s.boundary, s.initialFluid, s.params.restDensity);
+  b.reserve(s.engine->wallCount());
+  appendWalls(b, s.engine->downloadWalls(), s.initialFluid, s.params.restDensity);
   return std::move(b.out);
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "backends.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph {
@@ -56,11 +57,14 @@ double frontPosition(const Simulation& sim) {
   return front + 0.5 * sim.calibration().spacing;  // the particle's extent, not its centre
 }
 
-TEST(DamBreak, SurgeFrontFollowsMartinAndMoyce) {
+class DamBreak : public ::testing::TestWithParam<Backend> {};
+
+TEST_P(DamBreak, SurgeFrontFollowsMartinAndMoyce) {
+  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
   const auto experiment = readMartinMoyce();
   ASSERT_GE(experiment.size(), 15u) << "test data missing";
   const double a = 0.1, g = 9.81;
-  Simulation sim(damBreak(a));
+  Simulation sim(damBreak(a), testing::on(GetParam()));
   double sumError = 0.0;
   int compared = 0;
   for (const FrontPoint& p : experiment) {
@@ -80,6 +84,8 @@ TEST(DamBreak, SurgeFrontFollowsMartinAndMoyce) {
   EXPECT_LT(sumError / compared, 0.05) << "mean relative error in Z";
   EXPECT_EQ(sim.fluidCount(), sim.calibration().fluidParticles) << "no particle may leave";
 }
+
+SPH_ON_EVERY_BACKEND(DamBreak);
 
 }  // namespace
 }  // namespace sph

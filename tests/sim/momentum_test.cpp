@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <tuple>
 
+#include "backends.hpp"
 #include "scene_builders.hpp"
 #include "sph/simulation.hpp"
 
@@ -29,10 +32,12 @@ Momentum momentumOf(const Simulation& sim) {
   return out;
 }
 
-class MomentumConservation : public ::testing::TestWithParam<PressureForm> {};
+class MomentumConservation : public ::testing::TestWithParam<std::tuple<Backend, PressureForm>> {};
 
 TEST_P(MomentumConservation, ConstantOverAThousandSteps) {
-  Simulation sim(testing::collidingBlocks(GetParam()));
+  const auto [backend, form] = GetParam();
+  SPH_SKIP_UNLESS_AVAILABLE(backend);
+  Simulation sim(testing::collidingBlocks(form), testing::on(backend));
   const Momentum before = momentumOf(sim);
   const double maxKinetic0 = sim.stats().kineticEnergy;
   for (int i = 0; i < 1000; ++i) sim.step();
@@ -46,8 +51,14 @@ TEST_P(MomentumConservation, ConstantOverAThousandSteps) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(PressureForms, MomentumConservation,
-                         ::testing::Values(PressureForm::Symmetric, PressureForm::Paper));
+INSTANTIATE_TEST_SUITE_P(
+    BackendsAndPressureForms, MomentumConservation,
+    ::testing::Combine(::testing::Values(Backend::Cpu, Backend::Cuda),
+                       ::testing::Values(PressureForm::Symmetric, PressureForm::Paper)),
+    [](const auto& info) {
+      return std::string(std::get<0>(info.param) == Backend::Cuda ? "cuda" : "cpu") +
+             (std::get<1>(info.param) == PressureForm::Symmetric ? "_symmetric" : "_paper");
+    });
 
 }  // namespace
 }  // namespace sph

@@ -1,12 +1,17 @@
-#include "backend/cpu_parallel.hpp"
+// Stage: all forces in one pass (seed 1 Algorithm 2): pressure, viscosity, surface tension,
+// gravity and external accelerations. Reads position, velocity, pressureState, the neighbour
+// lists, the walls and externalById. Writes acceleration (w: |∇c|).
+#pragma once
+
 #include "fluid/kernel_dispatch.hpp"
 #include "fluid/neighbors.hpp"
-#include "fluid/stages.hpp"
+#include "fluid/parameters.hpp"
+#include "fluid/particles.hpp"
 #include "sph/core/momentum.hpp"
 
 namespace sph::fluid {
 
-namespace {
+namespace detail {
 
 // The scene's choices as compile-time constants, so the neighbour loop has no branch on them.
 template <PressureForm kForm, ViscosityModel kViscosity, bool kSurfaceTension>
@@ -16,8 +21,8 @@ struct ForceOptions {
   static constexpr bool surfaceTension = kSurfaceTension;
 };
 
-template <class Options, class Kernels>
-void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles& boundary,
+template <class B, class Options, class Kernels>
+void forcePass(FluidParticles<B>& fluid, const Grid<B>& grid, const BoundaryParticles<B>& boundary,
                const FluidParameters& params, Kernels kernels) {
   constexpr bool kSymmetric = Options::form == PressureForm::Symmetric;
   constexpr bool kArtificial = Options::viscosity == ViscosityModel::Artificial;
@@ -38,7 +43,7 @@ void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles&
   const std::uint32_t* neighbors = fluid.neighbors.data();
   const std::uint32_t* neighborCount = fluid.neighborCount.data();
 
-  backend::forEach(
+  B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const Vec3 xi = xyz(position[i]);
         const Vec3 vi = xyz(velocity[i]);
@@ -114,41 +119,42 @@ void forcePass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles&
       });
 }
 
-template <class Options>
-void forcePassWithKernels(FluidParticles& fluid, const Grid& grid,
-                          const BoundaryParticles& boundary, const FluidParameters& params) {
+template <class B, class Options>
+void forcePassWithKernels(FluidParticles<B>& fluid, const Grid<B>& grid,
+                          const BoundaryParticles<B>& boundary, const FluidParameters& params) {
   withKernels(params,
-              [&](auto kernels) { forcePass<Options>(fluid, grid, boundary, params, kernels); });
+              [&](auto kernels) { forcePass<B, Options>(fluid, grid, boundary, params, kernels); });
 }
 
-template <PressureForm kForm, ViscosityModel kViscosity>
-void forcePassWithTension(FluidParticles& fluid, const Grid& grid,
-                          const BoundaryParticles& boundary, const FluidParameters& params) {
+template <class B, PressureForm kForm, ViscosityModel kViscosity>
+void forcePassWithTension(FluidParticles<B>& fluid, const Grid<B>& grid,
+                          const BoundaryParticles<B>& boundary, const FluidParameters& params) {
   if (params.surfaceTension > 0.0f) {
-    forcePassWithKernels<ForceOptions<kForm, kViscosity, true>>(fluid, grid, boundary, params);
+    forcePassWithKernels<B, ForceOptions<kForm, kViscosity, true>>(fluid, grid, boundary, params);
   } else {
-    forcePassWithKernels<ForceOptions<kForm, kViscosity, false>>(fluid, grid, boundary, params);
+    forcePassWithKernels<B, ForceOptions<kForm, kViscosity, false>>(fluid, grid, boundary, params);
   }
 }
 
-template <PressureForm kForm>
-void forcePassWithViscosity(FluidParticles& fluid, const Grid& grid,
-                            const BoundaryParticles& boundary, const FluidParameters& params) {
+template <class B, PressureForm kForm>
+void forcePassWithViscosity(FluidParticles<B>& fluid, const Grid<B>& grid,
+                            const BoundaryParticles<B>& boundary, const FluidParameters& params) {
   if (params.viscosityModel == ViscosityModel::Artificial) {
-    forcePassWithTension<kForm, ViscosityModel::Artificial>(fluid, grid, boundary, params);
+    forcePassWithTension<B, kForm, ViscosityModel::Artificial>(fluid, grid, boundary, params);
   } else {
-    forcePassWithTension<kForm, ViscosityModel::Muller>(fluid, grid, boundary, params);
+    forcePassWithTension<B, kForm, ViscosityModel::Muller>(fluid, grid, boundary, params);
   }
 }
 
-}  // namespace
+}  // namespace detail
 
-void computeForces(FluidParticles& fluid, const Grid& grid, const BoundaryParticles& boundary,
-                   const FluidParameters& params) {
+template <class B>
+void computeForces(FluidParticles<B>& fluid, const Grid<B>& grid,
+                   const BoundaryParticles<B>& boundary, const FluidParameters& params) {
   if (params.pressureForm == PressureForm::Symmetric) {
-    forcePassWithViscosity<PressureForm::Symmetric>(fluid, grid, boundary, params);
+    detail::forcePassWithViscosity<B, PressureForm::Symmetric>(fluid, grid, boundary, params);
   } else {
-    forcePassWithViscosity<PressureForm::Paper>(fluid, grid, boundary, params);
+    detail::forcePassWithViscosity<B, PressureForm::Paper>(fluid, grid, boundary, params);
   }
 }
 

@@ -1,11 +1,16 @@
-#include <cmath>
+// Stage: build the uniform grid. Reads position, velocity, id. Writes them reordered by cell,
+// grid.cellStart and count. Particles outside the domain are removed; returns how many.
+#pragma once
 
-#include "backend/cpu_parallel.hpp"
-#include "fluid/stages.hpp"
+#include <cmath>
+#include <cstddef>
+
+#include "fluid/parameters.hpp"
+#include "fluid/particles.hpp"
 
 namespace sph::fluid {
 
-namespace {
+namespace detail {
 
 SPH_HD bool insideDomain(const DomainParameters& d, Vec3 p) {
   // Written so that NaN compares as outside.
@@ -13,7 +18,7 @@ SPH_HD bool insideDomain(const DomainParameters& d, Vec3 p) {
          p.z <= d.max.z;
 }
 
-// The extent of the particles inside the domain; NaN positions count as outside.
+// The extent of the particles inside the domain.
 struct Bounds {
   Vec3 lo, hi;
   bool any;
@@ -26,42 +31,43 @@ SPH_HD Bounds merge(const Bounds& a, const Bounds& b) {
                 Vec3{fmaxf(a.hi.x, b.hi.x), fmaxf(a.hi.y, b.hi.y), fmaxf(a.hi.z, b.hi.z)}, true};
 }
 
-}  // namespace
+}  // namespace detail
 
-std::size_t buildGrid(FluidParticles& fluid, Grid& grid, const DomainParameters& domain) {
+template <class B>
+std::size_t buildGrid(FluidParticles<B>& fluid, Grid<B>& grid, const DomainParameters& domain) {
   const std::size_t n = fluid.count;
   Vec4* position = fluid.position.data();
   std::uint32_t* cell = fluid.cell.data();
 
-  const Bounds bounds = backend::reduce(
-      n, Bounds{Vec3{0, 0, 0}, Vec3{0, 0, 0}, false},
+  const detail::Bounds bounds = B::reduce(
+      n, detail::Bounds{Vec3{0, 0, 0}, Vec3{0, 0, 0}, false},
       SPH_LAMBDA(std::size_t i) {
         const Vec3 p = xyz(position[i]);
-        return insideDomain(domain, p) ? Bounds{p, p, true} : Bounds{p, p, false};
+        return detail::Bounds{p, p, detail::insideDomain(domain, p)};
       },
-      SPH_LAMBDA(const Bounds& a, const Bounds& b) { return merge(a, b); });
+      SPH_LAMBDA(const detail::Bounds& a, const detail::Bounds& b) { return detail::merge(a, b); });
   grid.spec = bounds.any ? makeGrid(bounds.lo, bounds.hi, grid.cellSize)
                          : makeGrid(domain.min, domain.min, grid.cellSize);
   const GridSpec spec = grid.spec;
   const std::uint32_t outsideBin = spec.cellCount;
 
-  backend::forEach(
+  B::forEach(
       n, SPH_LAMBDA(std::size_t i) {
         const Vec3 p = xyz(position[i]);
-        cell[i] = insideDomain(domain, p)
+        cell[i] = detail::insideDomain(domain, p)
                       ? cellIndex(spec, clampToGrid(spec, cellCoordinate(spec, p)))
                       : outsideBin;
       });
 
   grid.cellStart.resize(spec.cellCount + 2);
-  backend::countingSort(cell, n, outsideBin + 1, fluid.order.data(), grid.cellStart.data());
-  const std::size_t kept = grid.cellStart[outsideBin];
+  B::countingSort(cell, n, outsideBin + 1, fluid.order.data(), grid.cellStart.data());
+  const std::size_t kept = B::read(grid.cellStart.data() + outsideBin);
 
-  backend::gather(fluid.position.data(), fluid.order.data(), kept, fluid.scratch4.data());
+  B::gather(fluid.position.data(), fluid.order.data(), kept, fluid.scratch4.data());
   fluid.position.swap(fluid.scratch4);
-  backend::gather(fluid.velocity.data(), fluid.order.data(), kept, fluid.scratch4.data());
+  B::gather(fluid.velocity.data(), fluid.order.data(), kept, fluid.scratch4.data());
   fluid.velocity.swap(fluid.scratch4);
-  backend::gather(fluid.id.data(), fluid.order.data(), kept, fluid.scratchId.data());
+  B::gather(fluid.id.data(), fluid.order.data(), kept, fluid.scratchId.data());
   fluid.id.swap(fluid.scratchId);
 
   fluid.count = kept;

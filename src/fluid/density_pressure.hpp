@@ -1,17 +1,22 @@
-#include "backend/cpu_parallel.hpp"
+// Stage: density with pressure in one pass (seed 1 Algorithm 1). Reads position and the walls.
+// Writes density, pressure, pressureState and the neighbour lists.
+#pragma once
+
 #include "fluid/kernel_dispatch.hpp"
 #include "fluid/neighbors.hpp"
-#include "fluid/stages.hpp"
+#include "fluid/parameters.hpp"
+#include "fluid/particles.hpp"
 #include "sph/core/eos.hpp"
 #include "sph/core/momentum.hpp"
 
 namespace sph::fluid {
 
-namespace {
+namespace detail {
 
-template <class Kernels>
-void densityPass(FluidParticles& fluid, const Grid& grid, const BoundaryParticles& boundary,
-                 const FluidParameters& params, Kernels kernels) {
+template <class B, class Kernels>
+void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
+                 const BoundaryParticles<B>& boundary, const FluidParameters& params,
+                 Kernels kernels) {
   const GridSpec spec = grid.spec;
   const std::uint32_t* cellStart = grid.cellStart.data();
   const GridSpec wallGrid = boundary.grid;
@@ -27,7 +32,7 @@ void densityPass(FluidParticles& fluid, const Grid& grid, const BoundaryParticle
   const float h2 = params.h * params.h;
   const FluidParameters p = params;
 
-  backend::forEach(
+  B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const Vec3 xi = xyz(position[i]);
         float sum = 0.0f;  // seed 1 eq. 4, self included
@@ -56,11 +61,15 @@ void densityPass(FluidParticles& fluid, const Grid& grid, const BoundaryParticle
       });
 }
 
-}  // namespace
+}  // namespace detail
 
-void computeDensityAndPressure(FluidParticles& fluid, const Grid& grid,
-                               const BoundaryParticles& boundary, const FluidParameters& params) {
-  withKernels(params, [&](auto kernels) { densityPass(fluid, grid, boundary, params, kernels); });
+template <class B>
+void computeDensityAndPressure(FluidParticles<B>& fluid, const Grid<B>& grid,
+                               const BoundaryParticles<B>& boundary,
+                               const FluidParameters& params) {
+  withKernels(params, [&](auto kernels) {
+    detail::densityPass<B>(fluid, grid, boundary, params, kernels);
+  });
 }
 
 }  // namespace sph::fluid

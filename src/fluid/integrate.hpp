@@ -1,9 +1,13 @@
-#include "backend/cpu_parallel.hpp"
-#include "fluid/stages.hpp"
+// Stage: symplectic Euler, v += dt a then x += dt v; then the seed's damped box, or the clamp
+// policy, keeps particles in the domain. Returns how many the clamp put back.
+#pragma once
+
+#include "fluid/parameters.hpp"
+#include "fluid/particles.hpp"
 
 namespace sph::fluid {
 
-namespace {
+namespace detail {
 
 // Seed 2's box: a particle past a face is put back on it, its normal velocity reversed and
 // scaled by the damping.
@@ -32,34 +36,35 @@ SPH_HD bool clamp(float& x, float& v, float lo, float hi) {
   return false;
 }
 
-}  // namespace
+}  // namespace detail
 
-std::size_t integrate(FluidParticles& fluid, float dt, const DomainParameters& domain) {
+template <class B>
+std::size_t integrate(FluidParticles<B>& fluid, float dt, const DomainParameters& domain) {
   Vec4* position = fluid.position.data();
   Vec4* velocity = fluid.velocity.data();
   const Vec4* acceleration = fluid.acceleration.data();
   const DomainParameters d = domain;
 
-  backend::forEach(
+  B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         Vec3 v = xyz(velocity[i]) + xyz(acceleration[i]) * dt;
         Vec3 x = xyz(position[i]) + v * dt;
         if (d.dampedBox) {
-          reflect(x.x, v.x, d.min.x, d.max.x, d.damping);
-          reflect(x.y, v.y, d.min.y, d.max.y, d.damping);
-          reflect(x.z, v.z, d.min.z, d.max.z, d.damping);
+          detail::reflect(x.x, v.x, d.min.x, d.max.x, d.damping);
+          detail::reflect(x.y, v.y, d.min.y, d.max.y, d.damping);
+          detail::reflect(x.z, v.z, d.min.z, d.max.z, d.damping);
         }
         bool clamped = false;
         if (d.clampOutside && !d.dampedBox) {
-          clamped = clamp(x.x, v.x, d.min.x, d.max.x);
-          clamped = clamp(x.y, v.y, d.min.y, d.max.y) || clamped;
-          clamped = clamp(x.z, v.z, d.min.z, d.max.z) || clamped;
+          clamped = detail::clamp(x.x, v.x, d.min.x, d.max.x);
+          clamped = detail::clamp(x.y, v.y, d.min.y, d.max.y) || clamped;
+          clamped = detail::clamp(x.z, v.z, d.min.z, d.max.z) || clamped;
         }
         velocity[i] = makeVec4(v, clamped ? 1.0f : 0.0f);  // w: clamped this step
         position[i] = makeVec4(x);
       });
   if (!d.clampOutside || d.dampedBox) return 0;
-  return backend::reduce(
+  return B::reduce(
       fluid.count, std::size_t{0}, SPH_LAMBDA(std::size_t i) { return std::size_t(velocity[i].w); },
       SPH_LAMBDA(std::size_t a, std::size_t b) { return a + b; });
 }

@@ -1,0 +1,101 @@
+// FluidEngine for backend B: the particle arrays in B's memory and the stages run on them.
+// Included by cpu_engine.cpp (g++) and cuda_engine.cu (nvcc) only.
+#pragma once
+
+#include <vector>
+
+#include "fluid/stages.hpp"
+#include "sim/fluid_engine.hpp"
+
+namespace sph::sim {
+
+template <class B>
+class EngineImpl final : public FluidEngine {
+ public:
+  explicit EngineImpl(const EngineSetup& setup) : params_(setup.params), domain_(setup.domain) {
+    const std::size_t n = setup.positions.size();
+    std::vector<Vec4> position(n), velocity(n), zero(n, Vec4{0, 0, 0, 0});
+    std::vector<std::uint32_t> id(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      position[i] = makeVec4(setup.positions[i]);
+      velocity[i] = makeVec4(setup.velocities[i]);
+      id[i] = static_cast<std::uint32_t>(i);
+    }
+    fluid_.count = n;
+    B::upload(fluid_.position, position.data(), n);
+    B::upload(fluid_.velocity, velocity.data(), n);
+    B::upload(fluid_.acceleration, zero.data(), n);
+    B::upload(fluid_.id, id.data(), n);
+    for (auto* b : {&fluid_.scratch4, &fluid_.pressureState}) b->resize(n);
+    for (auto* b : {&fluid_.cell, &fluid_.order, &fluid_.scratchId, &fluid_.neighborCount})
+      b->resize(n);
+    fluid_.density.resize(n);
+    fluid_.pressure.resize(n);
+    fluid_.neighborStride = setup.neighborStride;
+    fluid_.neighbors.resize(n * setup.neighborStride);
+    grid_.cellSize = params_.h;
+    fluid::prepareBoundary(boundary_, setup.walls, static_cast<std::uint32_t>(n), params_);
+  }
+
+  const char* backendName() const override { return B::kName; }
+  std::size_t fluidCount() const override { return fluid_.count; }
+  std::size_t wallCount() const override { return boundary_.count; }
+
+  std::size_t buildGrid() override { return fluid::buildGrid(fluid_, grid_, domain_); }
+  void computeDensityAndPressure() override {
+    fluid::computeDensityAndPressure(fluid_, grid_, boundary_, params_);
+  }
+  void computeForces() override { fluid::computeForces(fluid_, grid_, boundary_, params_); }
+  fluid::StepMeasures measureStep() override {
+    return fluid::measureStep(fluid_, params_.restDensity);
+  }
+  std::size_t integrate(float dt) override { return fluid::integrate(fluid_, dt, domain_); }
+
+  fluid::BadParticle findBadParticle(float maxDensityError) const override {
+    return fluid::findBadParticle(fluid_, params_.restDensity, maxDensityError);
+  }
+
+  HostParticles download() const override {
+    const std::size_t n = fluid_.count;
+    HostParticles h;
+    h.id.resize(n);
+    h.position.resize(n);
+    h.velocity.resize(n);
+    h.density.resize(n);
+    h.pressure.resize(n);
+    h.acceleration.resize(n);
+    B::download(fluid_.id, h.id.data(), n);
+    B::download(fluid_.position, h.position.data(), n);
+    B::download(fluid_.velocity, h.velocity.data(), n);
+    B::download(fluid_.density, h.density.data(), n);
+    B::download(fluid_.pressure, h.pressure.data(), n);
+    B::download(fluid_.acceleration, h.acceleration.data(), n);
+    return h;
+  }
+
+  HostWalls downloadWalls() const override {
+    HostWalls w;
+    w.id.resize(boundary_.count);
+    w.position.resize(boundary_.count);
+    B::download(boundary_.id, w.id.data(), boundary_.count);
+    B::download(boundary_.position, w.position.data(), boundary_.count);
+    return w;
+  }
+
+  void setExternalAcceleration(const std::vector<Vec4>& byId) override {
+    if (byId.empty()) {
+      fluid_.externalById.resize(0);
+      return;
+    }
+    B::upload(fluid_.externalById, byId.data(), byId.size());
+  }
+
+ private:
+  fluid::FluidParameters params_;
+  fluid::DomainParameters domain_;
+  fluid::FluidParticles<B> fluid_;
+  fluid::BoundaryParticles<B> boundary_;
+  fluid::Grid<B> grid_;
+};
+
+}  // namespace sph::sim
