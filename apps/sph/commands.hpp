@@ -14,10 +14,10 @@ enum ExitCode { kExitOk = 0, kExitBadInput = 2, kExitSimulationFailed = 3 };
 
 struct RunOptions {
   std::string scene;
-  std::string out;  // default: out/<scene name>
-  std::string backend = "auto";
-  int threads = 0;  // 0: all hardware threads
-  int device = 0;   // CUDA device
+  std::string out;              // default: out/<scene name>
+  std::string backend = "cpu";  // until the GPU engine has run on a GPU (docs/gpu.md)
+  int threads = 0;              // 0: all hardware threads
+  int device = 0;               // CUDA device
   std::vector<std::string> overrides;
   bool force = false;
   bool quiet = false;
@@ -25,7 +25,7 @@ struct RunOptions {
 
 struct BenchOptions {
   std::vector<int> sizes{4096, 16384, 65536, 262144};
-  std::string backend = "auto";
+  std::string backend = "cpu";  // until the GPU engine has run on a GPU (docs/gpu.md)
   int threads = 0;
   int device = 0;
   int warmupSteps = 20;
