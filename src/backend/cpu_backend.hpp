@@ -24,8 +24,9 @@ struct CpuBackend {
   static T reduce(std::size_t n, T identity, Map map, Combine combine) {
     return backend::reduce(n, identity, map, combine);
   }
+  struct SortScratch {};  // the CPU sort needs none that lives across steps
   static void countingSort(const std::uint32_t* keys, std::size_t n, std::uint32_t binCount,
-                           std::uint32_t* order, std::uint32_t* binStart) {
+                           std::uint32_t* order, std::uint32_t* binStart, SortScratch&) {
     backend::countingSort(keys, n, binCount, order, binStart);
   }
   template <class T>

@@ -60,7 +60,8 @@ std::size_t buildGrid(FluidParticles<B>& fluid, Grid<B>& grid, const DomainParam
       });
 
   grid.cellStart.resize(spec.cellCount + 2);
-  B::countingSort(cell, n, outsideBin + 1, fluid.order.data(), grid.cellStart.data());
+  B::countingSort(cell, n, outsideBin + 1, fluid.order.data(), grid.cellStart.data(),
+                  grid.sortScratch);
   const std::size_t kept = B::read(grid.cellStart.data() + outsideBin);
 
   B::gather(fluid.position.data(), fluid.order.data(), kept, fluid.scratch4.data());

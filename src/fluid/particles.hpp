@@ -64,6 +64,7 @@ struct Grid {
   float cellSize = 0.0f;  // h
   GridSpec spec;
   typename B::template Buffer<std::uint32_t> cellStart;  // cellCount + 2
+  typename B::SortScratch sortScratch;
 };
 
 }  // namespace sph::fluid

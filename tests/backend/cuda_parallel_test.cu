@@ -39,7 +39,8 @@ TEST_F(CudaParallel, CountingSortMatchesTheCpuBackend) {
 
   DeviceBuffer<std::uint32_t> dKeys, dOrder(keys.size()), dStart(bins + 1);
   dKeys.copyFromHost(keys.data(), keys.size());
-  countingSort(dKeys.data(), keys.size(), bins, dOrder.data(), dStart.data());
+  SortScratch scratch;
+  countingSort(dKeys.data(), keys.size(), bins, dOrder.data(), dStart.data(), scratch);
   std::vector<std::uint32_t> order(keys.size()), start(bins + 1);
   dOrder.copyToHost(order.data(), order.size());
   dStart.copyToHost(start.data(), start.size());

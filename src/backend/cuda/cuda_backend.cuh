@@ -23,9 +23,10 @@ struct CudaBackend {
   static T reduce(std::size_t n, T identity, Map map, Combine combine) {
     return cuda::reduce(n, identity, map, combine);
   }
+  using SortScratch = cuda::SortScratch;  // kept across steps: no allocation per step
   static void countingSort(const std::uint32_t* keys, std::size_t n, std::uint32_t binCount,
-                           std::uint32_t* order, std::uint32_t* binStart) {
-    cuda::countingSort(keys, n, binCount, order, binStart);
+                           std::uint32_t* order, std::uint32_t* binStart, SortScratch& scratch) {
+    cuda::countingSort(keys, n, binCount, order, binStart, scratch);
   }
   template <class T>
   static void gather(const T* in, const std::uint32_t* order, std::size_t n, T* out) {

@@ -1,6 +1,6 @@
-#include <cub/device/device_radix_sort.cuh>
 #include <thrust/execution_policy.h>
 #include <thrust/scan.h>
+#include <cub/device/device_radix_sort.cuh>
 
 #include "backend/cuda/cuda_parallel.cuh"
 
@@ -38,7 +38,7 @@ std::uint32_t exclusiveScan(std::uint32_t* data, std::size_t n) {
 }
 
 void countingSort(const std::uint32_t* keys, std::size_t n, std::uint32_t binCount,
-                  std::uint32_t* order, std::uint32_t* binStart) {
+                  std::uint32_t* order, std::uint32_t* binStart, SortScratch& scratch) {
   SPH_CUDA_CHECK(cudaMemset(binStart, 0, (binCount + 1) * sizeof(std::uint32_t)));
   if (n == 0) return;
   histogramKernel<<<blocksFor(n), kBlockSize>>>(keys, n, binStart);
@@ -46,17 +46,19 @@ void countingSort(const std::uint32_t* keys, std::size_t n, std::uint32_t binCou
   // binStart[binCount] holds 0 before the scan, so the scan leaves the total there.
   exclusiveScan(binStart, binCount + 1);
 
-  DeviceBuffer<std::uint32_t> sortedKeys(n), indices(n);
-  iotaKernel<<<blocksFor(n), kBlockSize>>>(indices.data(), n);
+  scratch.sortedKeys.resize(n);
+  scratch.indices.resize(n);
+  iotaKernel<<<blocksFor(n), kBlockSize>>>(scratch.indices.data(), n);
   SPH_CUDA_CHECK(cudaGetLastError());
   const int bits = significantBits(binCount);
   std::size_t scratchBytes = 0;
-  SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, scratchBytes, keys, sortedKeys.data(),
-                                                 indices.data(), order, n, 0, bits));
-  DeviceBuffer<unsigned char> scratch(scratchBytes);
-  SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(scratch.data(), scratchBytes, keys,
-                                                 sortedKeys.data(), indices.data(), order, n, 0,
-                                                 bits));
+  SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, scratchBytes, keys,
+                                                 scratch.sortedKeys.data(), scratch.indices.data(),
+                                                 order, n, 0, bits));
+  scratch.cub.resize(scratchBytes);
+  SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(scratch.cub.data(), scratchBytes, keys,
+                                                 scratch.sortedKeys.data(), scratch.indices.data(),
+                                                 order, n, 0, bits));
 }
 
 }  // namespace sph::backend::cuda

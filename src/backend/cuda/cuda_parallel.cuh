@@ -39,10 +39,17 @@ void gather(const T* in, const std::uint32_t* order, std::size_t n, T* out) {
 // In place on device memory: data[i] = sum of data[0..i). Returns the total.
 std::uint32_t exclusiveScan(std::uint32_t* data, std::size_t n);
 
+// The radix sort's working memory, grown as needed and kept by the caller across calls.
+struct SortScratch {
+  DeviceBuffer<std::uint32_t> sortedKeys;
+  DeviceBuffer<std::uint32_t> indices;
+  DeviceBuffer<unsigned char> cub;
+};
+
 // Counting sort by key on device memory, as the CPU backend's: `order` (sorted position →
 // original index; stable, by CUB's radix sort) and `binStart` (binCount + 1 entries, from an
 // atomic histogram and a scan).
 void countingSort(const std::uint32_t* keys, std::size_t n, std::uint32_t binCount,
-                  std::uint32_t* order, std::uint32_t* binStart);
+                  std::uint32_t* order, std::uint32_t* binStart, SortScratch& scratch);
 
 }  // namespace sph::backend::cuda

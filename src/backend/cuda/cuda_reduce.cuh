@@ -16,7 +16,8 @@ namespace sph::backend::cuda {
 template <class T, class Map, class Combine>
 T reduce(std::size_t n, T identity, Map map, Combine combine) {
   const thrust::counting_iterator<std::size_t> first(0);
-  const T result = thrust::transform_reduce(thrust::device, first, first + n, map, identity, combine);
+  const T result =
+      thrust::transform_reduce(thrust::device, first, first + n, map, identity, combine);
   SPH_CUDA_CHECK(cudaGetLastError());
   return result;
 }
