@@ -7,6 +7,7 @@
 
 #include "fluid/parameters.hpp"
 #include "fluid/particles.hpp"
+#include "sph/core/eos.hpp"
 
 namespace sph::fluid {
 
@@ -27,13 +28,6 @@ struct BadParticle {
 };
 
 namespace detail {
-
-// Compression only: a free surface's particles lack neighbours and read low, which is not
-// an error of the method.
-SPH_HD float densityError(float density, float restDensity) {
-  const float e = density / restDensity - 1.0f;
-  return e > 0.0f ? e : 0.0f;
-}
 
 SPH_HD StepMeasures combine(StepMeasures a, StepMeasures b) {
   return StepMeasures{a.maxSpeed > b.maxSpeed ? a.maxSpeed : b.maxSpeed,
@@ -56,7 +50,7 @@ StepMeasures measureStep(const FluidParticles<B>& fluid, float restDensity) {
         const Vec3 a = xyz(acceleration[i]);
         const bool ok = isFinite(v) && isFinite(a) && isFinite(density[i]);
         return StepMeasures{lengthSquared(v), lengthSquared(a),
-                            detail::densityError(density[i], restDensity), ok};
+                            compression(density[i], restDensity), ok};
       },
       SPH_LAMBDA(StepMeasures a, StepMeasures b) { return detail::combine(a, b); });
   m.maxSpeed = sqrtf(m.maxSpeed);
@@ -83,7 +77,7 @@ BadParticle findBadParticle(const FluidParticles<B>& fluid, float restDensity,
     const Vec3 v = xyz(velocity[i]);
     const Vec3 a = xyz(acceleration[i]);
     const float rho = density[i];
-    const float compression = detail::densityError(rho, restDensity);
+    const float excess = compression(rho, restDensity);
     BadParticle here;
     if (!isFinite(rho)) {
       here = {true, id[i], "density", rho};
@@ -91,8 +85,8 @@ BadParticle findBadParticle(const FluidParticles<B>& fluid, float restDensity,
       here = {true, id[i], "acceleration", length(a)};
     } else if (!isFinite(v)) {
       here = {true, id[i], "velocity", length(v)};
-    } else if (compression > maxDensityError) {
-      here = {true, id[i], "compression rho/rho0 - 1", compression, true};
+    } else if (excess > maxDensityError) {
+      here = {true, id[i], "compression rho/rho0 - 1", excess, true};
     }
     if (here.found && (!bad.found || here.id < bad.id)) bad = here;
   }

@@ -4,6 +4,7 @@
 
 #include "backend/cpu_parallel.hpp"
 #include "sim/simulation_impl.hpp"
+#include "sph/core/eos.hpp"
 
 namespace sph {
 
@@ -71,7 +72,7 @@ FrameStats Simulation::stats() const {
       f.id.size(), Sums{},
       [&](std::size_t i) {
         const float v2 = lengthSquared(xyz(f.velocity[i]));
-        const float error = std::max(f.density[i] / restDensity - 1.0f, 0.0f);
+        const float error = compression(f.density[i], restDensity);
         return Sums{0.5 * mass * v2, f.density[i], error, v2,
                     f.acceleration[i].w > threshold ? 1u : 0u};
       },

@@ -27,6 +27,11 @@ TEST(EquationOfState, NegativePressureClampedUnlessAsked) {
   }
 }
 
+TEST(EquationOfState, CompressionIgnoresADeficit) {
+  EXPECT_NEAR(compression(1012.0, 1000.0), 0.012, 1e-12);
+  EXPECT_EQ(compression(950.0, 1000.0), 0.0);
+}
+
 // dp/dρ at rest must be c0² for every form, so the derived stiffness gives the chosen sound speed.
 TEST(EquationOfState, StiffnessGivesTheSoundSpeed) {
   const double c0 = 20.0, rho0 = 1000.0, e = 1e-3;

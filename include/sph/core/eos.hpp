@@ -28,6 +28,14 @@ SPH_HD Real pressureFromDensity(EquationOfState eos, Real density, Real restDens
   return (clampNegative && p < Real(0)) ? Real(0) : p;
 }
 
+// The density error the failure bound and the statistics use: compression ρ/ρ0 - 1, or 0. A
+// free surface's particles lack neighbours and read low, which is not an error of the method.
+template <class Real>
+SPH_HD Real compression(Real density, Real restDensity) {
+  const Real e = density / restDensity - Real(1);
+  return e > Real(0) ? e : Real(0);
+}
+
 // The stiffness for which dp/dρ at rest equals c0², i.e. the sound speed is c0.
 inline double stiffnessForSoundSpeed(EquationOfState eos, double soundSpeed, double restDensity) {
   const double c2 = soundSpeed * soundSpeed;
