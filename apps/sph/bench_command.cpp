@@ -27,14 +27,17 @@ double median(std::vector<double> v) {
 }
 
 struct StageSamples {
-  std::vector<double> total, buildGrid, densityPressure, forces, timeStep, integrate;
+  std::vector<double> total, buildGrid, densityPressure, forces, interaction, timeStep, integrate,
+      objects;
   void add(const StepProfile& p) {
     total.push_back(p.total());
     buildGrid.push_back(p.buildGrid);
     densityPressure.push_back(p.densityPressure);
     forces.push_back(p.forces);
+    interaction.push_back(p.interaction);
     timeStep.push_back(p.timeStep);
     integrate.push_back(p.integrate);
+    objects.push_back(p.objects);
   }
 };
 
@@ -51,9 +54,11 @@ nlohmann::json timeScene(const std::string& label, const Scene& scene,
   const double step = median(samples.total);
   const double n = double(sim.fluidCount());
   const double rate = step > 0 ? n * 1000.0 / step : 0.0;
-  std::printf("%-18s %10.0f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %14.3e\n", label.c_str(), n, step,
-              median(samples.buildGrid), median(samples.densityPressure), median(samples.forces),
-              median(samples.timeStep), median(samples.integrate), rate);
+  const double interaction = median(samples.interaction);
+  std::printf("%-22s %10.0f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %14.3e\n",
+              label.c_str(), n, step, median(samples.buildGrid), median(samples.densityPressure),
+              median(samples.forces), interaction, median(samples.timeStep),
+              median(samples.integrate), median(samples.objects), rate);
   std::fflush(stdout);
   return {{"scene", label},
           {"particles", sim.fluidCount()},
@@ -61,6 +66,10 @@ nlohmann::json timeScene(const std::string& label, const Scene& scene,
           {"build_grid_ms", median(samples.buildGrid)},
           {"density_pressure_ms", median(samples.densityPressure)},
           {"forces_ms", median(samples.forces)},
+          {"interaction_ms", interaction},
+          {"interaction_share", step > 0 ? interaction / step : 0.0},
+          {"influence_ratio", scene.objects.empty() ? 0.0 : scene.interaction.influenceRatio},
+          {"objects_ms", median(samples.objects)},
           {"time_step_ms", median(samples.timeStep)},
           {"integrate_ms", median(samples.integrate)},
           {"particle_steps_per_second", rate},
@@ -81,14 +90,24 @@ int benchCommand(const BenchOptions& options) {
       "sph bench: box drop, backend %s, %d threads, %d warm-up + %d timed steps; "
       "median ms per step\n",
       backendName, backend::threadCount(), options.warmupSteps, options.steps);
-  std::printf("%-18s %10s %9s %9s %9s %9s %9s %9s %14s\n", "scene", "particles", "step", "grid",
-              "density", "forces", "dt", "integrate", "particle-steps/s");
+  std::printf("%-22s %10s %9s %9s %9s %9s %9s %9s %9s %9s %14s\n", "scene", "particles", "step",
+              "grid", "density", "forces", "contacts", "dt", "integrate", "objects",
+              "particle-steps/s");
   nlohmann::json results = nlohmann::json::array();
   for (int size : options.sizes)
     results.push_back(timeScene("box_drop", boxDropScene(size), where, options));
   for (const std::string& path : options.scenes) {
-    const Scene scene = io::loadScene(path, options.overrides);
-    results.push_back(timeScene(scene.name, scene, where, options));
+    Scene scene = io::loadScene(path, options.overrides);
+    if (scene.objects.empty() || options.influenceRatios.empty()) {
+      results.push_back(timeScene(scene.name, scene, where, options));
+      continue;
+    }
+    for (double ratio : options.influenceRatios) {
+      scene.interaction.influenceRatio = ratio;
+      char label[64];
+      std::snprintf(label, sizeof label, "%s r%.2g", scene.name.c_str(), ratio);
+      results.push_back(timeScene(label, scene, where, options));
+    }
   }
   if (!options.json.empty()) {
     std::ofstream out(options.json);

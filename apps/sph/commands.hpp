@@ -33,6 +33,8 @@ struct BenchOptions {
   std::vector<std::string> scenes;  // also time these scene files
   std::vector<std::string> overrides;
   std::string json;  // also write the results here
+  // Seed 1 §9: each scene with objects is timed at each of these influence ratios.
+  std::vector<double> influenceRatios;
 };
 
 int runCommand(const RunOptions& options);

@@ -53,6 +53,12 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--scene", bench.scenes, "Also time this scene file (repeatable)");
   benchCmd->add_option("--set", bench.overrides, "Override a key of the --scene files")->take_all();
   benchCmd->add_option("--json", bench.json, "Also write the results as JSON to this file");
+  benchCmd
+      ->add_option("--influence", bench.influenceRatios,
+                   "Time each --scene with objects at these influence sphere radii (x the object "
+                   "particle radius), e.g. 1,1.5,2,3 (seed 1 §9)")
+      ->delimiter(',')
+      ->check(CLI::Range(1.0, 4.0));
 
   auto dispatch = [&]() -> int {
     if (*runCmd) {

@@ -44,6 +44,19 @@ void printCalibration(std::FILE* out, const Simulation& sim) {
                origin(s.fluid.surfaceThreshold.has_value()));
   std::fprintf(out, "  first time step      %.6g s (CFL %.3g; adaptive unless time.fixed_dt)\n",
                c.initialDt, s.time.cfl);
+  if (s.objects.empty()) return;
+  std::fprintf(out, "  objects              %zu, %llu particles\n", s.objects.size(),
+               static_cast<unsigned long long>(c.objectParticles));
+  std::fprintf(out, "  contact k_spring     %.6g N/m (%s)\n", c.contactStiffness,
+               origin(c.contactStiffnessFromScene));
+  std::fprintf(out, "  contact k_damping    %.6g N s/m (%s)\n", c.contactDamping,
+               origin(c.contactDampingFromScene));
+  std::fprintf(out, "  contact k_shear      %.6g N s/m (%s)\n", c.contactShear,
+               origin(c.contactShearFromScene));
+  std::fprintf(out, "  max acceleration     %.6g m/s^2 (%s)\n", c.maxAcceleration,
+               origin(c.maxAccelerationFromScene));
+  std::fprintf(out, "  influence sphere     %.3g x the object particle radius\n",
+               s.interaction.influenceRatio);
 }
 
 nlohmann::json calibrationJson(const Calibration& c) {
@@ -60,7 +73,12 @@ nlohmann::json calibrationJson(const Calibration& c) {
           {"kinematic_viscosity", c.kinematicViscosity},
           {"initial_dt", c.initialDt},
           {"surface_threshold", c.surfaceThreshold},
+          {"contact_stiffness", c.contactStiffness},
+          {"contact_damping", c.contactDamping},
+          {"contact_shear", c.contactShear},
+          {"max_acceleration", c.maxAcceleration},
           {"fluid_particles", c.fluidParticles},
+          {"object_particles", c.objectParticles},
           {"boundary_particles", c.boundaryParticles}};
 }
 
@@ -77,7 +95,21 @@ nlohmann::json statsJson(const FrameStats& s) {
           {"surface_count", s.surfaceCount},
           {"leaked_count", s.leakedCount},
           {"removed_count", s.removedCount},
+          {"contact_pairs", s.contactPairs},
+          {"objects", objectsJson(s.objects)},
           {"wall_ms_per_step", s.wallMsPerStep}};
+}
+
+nlohmann::json objectsJson(const std::vector<ObjectStats>& objects) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ObjectStats& o : objects) {
+    out.push_back({{"name", o.name},
+                   {"centre_of_mass", o.centreOfMass},
+                   {"velocity", o.velocity},
+                   {"fluid_force", o.fluidForce},
+                   {"broken_springs", o.brokenSprings}});
+  }
+  return out;
 }
 
 const char* backendName() {

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -15,6 +16,7 @@ void printCalibration(std::FILE* out, const Simulation& sim);
 
 nlohmann::json calibrationJson(const Calibration& c);
 nlohmann::json statsJson(const FrameStats& s);
+nlohmann::json objectsJson(const std::vector<ObjectStats>& objects);
 
 const char* backendName();
 const char* formatName(FrameFormat format);

@@ -48,6 +48,8 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
       {"real_time_factor", record.wallSeconds > 0 ? sim.time() / record.wallSeconds : 0.0},
       {"removed_count", sim.removedCount()},
       {"clamped_count", sim.clampedCount()},
+      {"leaked_count", sim.leakedCount()},
+      {"objects", objectsJson(sim.objectStats())},
       {"final", statsJson(sim.stats())},
       {"scene", io::sceneToJson(sim.scene())}};
   io::writeFileAtomically(output.dir() / "summary.json",
@@ -61,7 +63,9 @@ int runCommand(const RunOptions& options) {
   const Scene scene = io::loadScene(options.scene, options.overrides);
   const std::string dir = options.out.empty() ? "out/" + scene.name : options.out;
   Simulation sim(scene, simulationOptions(options.backend, options.device));
-  RunOutput output(dir, scene.output.format, options.force);
+  std::vector<std::string> objectNames;
+  for (const ObjectDesc& object : scene.objects) objectNames.push_back(object.name);
+  RunOutput output(dir, scene.output.format, options.force, objectNames);
   if (!options.quiet) {
     printCalibration(stdout, sim);
     if (std::string(sim.backendName()) == "cuda") {
@@ -86,7 +90,7 @@ int runCommand(const RunOptions& options) {
     FrameStats stats = sim.stats();
     const std::uint64_t steps = sim.stepCount() - lastFrameSteps;
     stats.wallMsPerStep = steps ? 1000.0 * secondsSince(lastFrameWall) / double(steps) : 0.0;
-    output.writeFrame(sim.frame(false), stats);
+    output.writeFrame(sim.frame(false), stats);  // objects move: they are in every frame
     lastFrameWall = Clock::now();
     lastFrameSteps = sim.stepCount();
   };
@@ -121,11 +125,12 @@ int runCommand(const RunOptions& options) {
     const FrameStats last = sim.stats();
     std::printf(
         "done: %llu steps, %.3f ms per step, %d frames; %llu fluid particles left, "
-        "%llu removed\n",
+        "%llu removed, %llu leaked\n",
         static_cast<unsigned long long>(sim.stepCount()),
         1000.0 * record.wallSeconds / double(std::max<std::uint64_t>(sim.stepCount(), 1)),
         output.framesWritten(), static_cast<unsigned long long>(last.fluidCount),
-        static_cast<unsigned long long>(last.removedCount));
+        static_cast<unsigned long long>(last.removedCount),
+        static_cast<unsigned long long>(last.leakedCount));
     std::printf(
         "open %s/frames.pvd (and the walls, %s/boundary.vtp) in ParaView; statistics "
         "in %s/stats.csv\n",

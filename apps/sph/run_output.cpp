@@ -23,7 +23,8 @@ bool holdsEarlierRun(const fs::path& dir) {
 
 }  // namespace
 
-RunOutput::RunOutput(fs::path dir, FrameFormat format, bool force)
+RunOutput::RunOutput(fs::path dir, FrameFormat format, bool force,
+                     std::vector<std::string> objectNames)
     : dir_(std::move(dir)), format_(format) {
   if (holdsEarlierRun(dir_)) {
     if (!force)
@@ -36,7 +37,7 @@ RunOutput::RunOutput(fs::path dir, FrameFormat format, bool force)
   fs::create_directories(dir_ / "frames", error);
   if (error)
     throw InputError(dir_.string() + ": cannot create the output directory: " + error.message());
-  stats_.emplace(dir_ / "stats.csv");
+  stats_.emplace(dir_ / "stats.csv", std::move(objectNames));
   if (format_ == FrameFormat::Vtp) series_.emplace(dir_ / "frames.pvd");
 }
 

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "io/pvd_series.hpp"
 #include "io/stats_writer.hpp"
@@ -19,7 +20,9 @@ namespace sph::cli {
 class RunOutput {
  public:
   // Throws InputError if `dir` holds an earlier run and `force` is false.
-  RunOutput(std::filesystem::path dir, FrameFormat format, bool force);
+  // `objectNames` give stats.csv columns of their own.
+  RunOutput(std::filesystem::path dir, FrameFormat format, bool force,
+            std::vector<std::string> objectNames = {});
 
   // Frames hold the fluid; the static walls go once into DIR/boundary.EXT.
   void writeBoundary(const ParticleFrame& walls);

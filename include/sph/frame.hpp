@@ -7,7 +7,7 @@
 
 namespace sph {
 
-enum class ParticleKind : std::uint8_t { Fluid = 0, Boundary = 1 };
+enum class ParticleKind : std::uint8_t { Fluid = 0, Boundary = 1, Object = 2 };
 
 struct ParticleFrame {
   double time = 0.0;
@@ -20,6 +20,9 @@ struct ParticleFrame {
   std::vector<float> pressure;  // Pa
   std::vector<std::uint8_t> kind;
   std::vector<std::int32_t> object;  // -1 for fluid and static walls
+  // 1 for fluid particles on the free surface (seed 1 eqs. 11-12) and object particles on
+  // their object's surface.
+  std::vector<std::uint8_t> surface;
 
   std::size_t size() const { return id.size(); }
 };

@@ -24,10 +24,13 @@ struct AxisBox {
 // A block of fluid sampled on a cubic lattice of the fluid spacing. A hydrostatic block starts
 // compressed as it would rest under gravity, so a tank starts at rest instead of dropping into
 // its own compression and ringing.
+// `inside` names an object: only the lattice points in that object's interior are kept, so a
+// vessel can be filled completely.
 struct FluidBlock {
   AxisBox box;
   Vec3d velocity{0, 0, 0};
   bool hydrostatic = false;
+  std::string inside;
 };
 
 // A tank whose inner faces are `box`, built from `layers` layers of boundary particles
@@ -54,9 +57,9 @@ struct FluidDesc {
   bool clampNegativePressure = true;
   PressureForm pressureForm = PressureForm::Symmetric;
   ViscosityModel viscosityModel = ViscosityModel::Artificial;
-  double viscosity = 0.0;           // μ (Pa·s) for Müller; α (dimensionless) for artificial
-  double wallFriction = 0.0;        // fraction of the fluid viscosity applied against walls
-  double surfaceTension = 0.0;      // σ (N/m); 0 disables
+  double viscosity = 0.0;       // μ (Pa·s) for Müller; α (dimensionless) for artificial
+  double wallFriction = 0.0;    // fraction of the fluid viscosity applied against walls
+  double surfaceTension = 0.0;  // σ (N/m); 0 disables
   // |∇c| (1/m) above which a particle is on the surface and surface tension acts; unset: 0.22/h,
   // seed 2's 7.065 at its h = 1/32, scaled to ours.
   std::optional<double> surfaceThreshold;
@@ -89,6 +92,74 @@ struct FailureDesc {
   double maxDensityError = 0.5;  // compression ρ/ρ0 - 1 past which the run stops as failed
 };
 
+// Particle-based objects (seed 1 §4.3, §7) for the built-in object engine (src/objects).
+enum class ObjectMotion { Rigid, Deformable, Kinematic };
+enum class ShapeKind { Box, Sphere, Capsule, Tube, Mesh };
+
+// The shape an object's particles are sampled from, at its initial pose.
+struct ShapeDesc {
+  ShapeKind kind = ShapeKind::Box;
+  Vec3d center{0, 0, 0};       // of the box, sphere, capsule, tube; the mesh's origin goes here
+  Vec3d halfExtents{0, 0, 0};  // box
+  double radius = 0.0;         // sphere, capsule; tube: radius of the wall's particle layer
+  double length = 0.0;         // capsule, tube: distance between the end centres along `axis`
+  Vec3d axis{1, 0, 0};         // capsule, tube; any length but zero
+  bool capped = true;          // tube: closed by flat discs at both ends
+  std::string meshFile;        // mesh: OBJ or STL, resolved against the scene's folder
+  double scale = 1.0;          // mesh: multiplies the file's coordinates
+  bool solid = false;          // sample the whole volume, not only the surface
+  int layers = 1;              // surface sampling: layers of particles, inwards
+};
+
+// A kinematic object follows these keyframes: at `time` it is moved by `offset` and turned by
+// `rotation` (axis × angle in radians) from its initial pose, about its initial centre.
+// Linear in between; held after the last.
+struct KeyframeDesc {
+  double time = 0.0;
+  Vec3d offset{0, 0, 0};
+  Vec3d rotation{0, 0, 0};
+};
+
+// A deformable object: its particles are joined by springs to every particle within
+// `springReach` × spacing at rest.
+struct DeformableDesc {
+  double stiffness = 0.0;       // N/m per spring; 0: derived (sim/calibration)
+  double damping = 0.0;         // N·s/m along each spring; 0: derived (critical over a spring)
+  double breakingStrain = 0.0;  // a spring breaks past |l - l0| / l0; 0: never
+  double springReach = 1.5;     // × the object's spacing
+  std::vector<AxisBox> pinned;  // particles inside these boxes are fixed
+  std::vector<AxisBox> cuts;    // springs that pass through these start broken (a slit)
+};
+
+struct ObjectDesc {
+  std::string name;
+  ObjectMotion motion = ObjectMotion::Rigid;
+  ShapeDesc shape;
+  double density = 1000.0;  // kg/m³ of the material; a surface layer is `spacing` thick
+  double spacing = 0.0;     // particle spacing, m; 0: the fluid's
+  Vec3d velocity{0, 0, 0};
+  Vec3d angularVelocity{0, 0, 0};  // rad/s, rigid bodies
+  DeformableDesc deformable;
+  std::vector<KeyframeDesc> keyframes;
+};
+
+// Fluid–object contact (seed 1 §7.4, §8.2, §8.3). Unset values are derived by calibration.
+struct InteractionDesc {
+  double influenceRatio = 1.5;            // influence sphere radius / object particle radius
+  double distanceExponent = 4.0;          // β of the distance function exp(β (1 - q))
+  std::optional<double> stiffness;        // k_spring, N/m
+  std::optional<double> damping;          // k_damping, N·s/m
+  std::optional<double> shear;            // k_shear, N·s/m
+  std::optional<double> maxAcceleration;  // clamp on a fluid particle's acceleration, m/s²
+  bool cutAwareDamping = true;            // no damping against particles whose springs broke
+};
+
+// How the object engine runs beside the fluid (seed 1 figure 1).
+struct ObjectEngineDesc {
+  double rate = 1.0;      // engine steps per fluid step: 2 runs it twice as often, 0.5 half
+  bool ownThread = true;  // in its own thread, in lock-step with the fluid (deterministic)
+};
+
 struct Scene {
   std::string name;
   std::string description;
@@ -97,6 +168,9 @@ struct Scene {
   Vec3d gravity{0, -9.81, 0};
   FluidDesc fluid;
   std::vector<WallTank> walls;
+  std::vector<ObjectDesc> objects;
+  InteractionDesc interaction;
+  ObjectEngineDesc objectEngine;
   CalibrationDesc calibration;
   TimeDesc time;
   OutputDesc output;

@@ -31,7 +31,17 @@ struct Calibration {
   bool maxExpectedSpeedFromScene = false;
   bool soundSpeedFromScene = false;
   bool stiffnessFromScene = false;
+  // Fluid–object contact (seed 1 eqs. 13-15), when the scene has objects.
+  double contactStiffness = 0.0;  // k_spring, N/m
+  double contactDamping = 0.0;    // k_damping, N·s/m
+  double contactShear = 0.0;      // k_shear, N·s/m
+  double maxAcceleration = 0.0;   // clamp on a fluid particle's acceleration (§8.3), m/s²
+  bool contactStiffnessFromScene = false;
+  bool contactDampingFromScene = false;
+  bool contactShearFromScene = false;
+  bool maxAccelerationFromScene = false;
   std::uint64_t fluidParticles = 0;
+  std::uint64_t objectParticles = 0;
   std::uint64_t boundaryParticles = 0;
 };
 
@@ -40,9 +50,13 @@ struct StepProfile {
   double buildGrid = 0.0;
   double densityPressure = 0.0;
   double forces = 0.0;
+  double interaction = 0.0;  // collisions and contact forces with objects (seed 1 §7)
   double timeStep = 0.0;
   double integrate = 0.0;
-  double total() const { return buildGrid + densityPressure + forces + timeStep + integrate; }
+  double objects = 0.0;  // handing the step to the object engine (its own thread by default)
+  double total() const {
+    return buildGrid + densityPressure + forces + interaction + timeStep + integrate + objects;
+  }
 };
 
 enum class Backend { Cpu, Cuda, Auto };  // Auto: the GPU when one is present
@@ -84,6 +98,16 @@ class Simulation {
   const Scene& scene() const;
   const Calibration& calibration() const;
   const StepProfile& lastProfile() const;
+
+  // The objects of the scene, as their engine has them now.
+  std::vector<ObjectStats> objectStats() const;
+  // Fluid particles outside the object that held them at the start (seed 1 §9), counting
+  // those that were removed after leaving.
+  std::uint64_t leakedCount() const;
+  // Where each particle that ever left its container first left it (x, y, z per particle).
+  std::vector<float> leakPositions() const;
+  // The ids of the fluid particles outside their container now.
+  std::vector<std::uint32_t> leakedIds() const;
 
   // Statistics of the current state; wallMsPerStep is left 0 for the caller to fill.
   FrameStats stats() const;

@@ -1,9 +1,22 @@
 // Per-frame statistics: one row of stats.csv (DESIGN.md's command-line contract).
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace sph {
+
+// One object of the scene at one instant.
+struct ObjectStats {
+  std::string name;
+  double mass = 0.0;                            // kg
+  std::array<double, 3> centreOfMass{0, 0, 0};  // m
+  std::array<double, 3> velocity{0, 0, 0};      // of the centre of mass, m/s
+  std::array<double, 3> fluidForce{0, 0, 0};    // the fluid's contact force on it, last step, N
+  std::uint64_t brokenSprings = 0;
+};
 
 struct FrameStats {
   double time = 0.0;        // s
@@ -18,6 +31,8 @@ struct FrameStats {
   std::uint64_t surfaceCount = 0;
   std::uint64_t leakedCount = 0;
   std::uint64_t removedCount = 0;
+  std::uint64_t contactPairs = 0;  // fluid–object pairs in contact, last step
+  std::vector<ObjectStats> objects;
   double wallMsPerStep = 0.0;  // mean over the steps since the previous row
 };
 

@@ -18,10 +18,10 @@ static_assert(std::numeric_limits<float>::is_iec559, "PLY float must be IEEE 754
 
 namespace {
 
-// x y z, vx vy vz, density, pressure (float) + kind (uchar) + object (int) + id (uint);
-// PLY has no padding, so 41 bytes.
+// x y z, vx vy vz, density, pressure (float) + kind (uchar) + object (int) + surface (uchar)
+// + id (uint); PLY has no padding, so 42 bytes.
 constexpr std::size_t kVertexBytes =
-    8 * sizeof(float) + sizeof(std::uint8_t) + sizeof(std::int32_t) + sizeof(std::uint32_t);
+    8 * sizeof(float) + 2 * sizeof(std::uint8_t) + sizeof(std::int32_t) + sizeof(std::uint32_t);
 
 char* put(char* at, const void* value, std::size_t bytes) {
   std::memcpy(at, value, bytes);
@@ -43,6 +43,7 @@ void writePly(const ParticleFrame& frame, std::ostream& out) {
       << "property float pressure\n"
       << "property uchar kind\n"
       << "property int object\n"
+      << "property uchar surface\n"
       << "property uint id\n"
       << "end_header\n";
 
@@ -59,6 +60,8 @@ void writePly(const ParticleFrame& frame, std::ostream& out) {
       at = put(at, &frame.pressure[i], sizeof(float));
       at = put(at, &frame.kind[i], sizeof(std::uint8_t));
       at = put(at, &frame.object[i], sizeof(std::int32_t));
+      const std::uint8_t surface = i < frame.surface.size() ? frame.surface[i] : 0;
+      at = put(at, &surface, sizeof(std::uint8_t));
       at = put(at, &frame.id[i], sizeof(std::uint32_t));
     }
     out.write(buffer.data(), static_cast<std::streamsize>((end - begin) * kVertexBytes));

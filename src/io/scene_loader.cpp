@@ -56,6 +56,7 @@ FluidDesc readFluid(const ObjectReader& in) {
     block.box = readBox(blockIn);
     block.velocity = blockIn.vec3("velocity", block.velocity);
     block.hydrostatic = blockIn.boolean("hydrostatic", block.hydrostatic);
+    block.inside = blockIn.string("inside", block.inside);
     fluid.blocks.push_back(block);
   }
   return fluid;
@@ -73,6 +74,110 @@ std::vector<WallTank> readWalls(const ObjectReader& root) {
     walls.push_back(wall);
   }
   return walls;
+}
+
+std::vector<AxisBox> readBoxes(const ObjectReader& in, const std::string& key) {
+  std::vector<AxisBox> boxes;
+  for (const ObjectReader& boxIn : in.objectArray(key, /*required=*/false, /*nonEmpty=*/false))
+    boxes.push_back(readBox(boxIn));
+  return boxes;
+}
+
+ShapeDesc readShape(const ObjectReader& in) {
+  ShapeDesc shape;
+  shape.kind = in.choice("type", shape.kind, kShapeNames);
+  shape.center = in.vec3("center", shape.center);
+  shape.halfExtents = in.vec3("half_extents", shape.halfExtents);
+  shape.radius = in.number("radius", shape.radius, kNonNegative);
+  shape.length = in.number("length", shape.length, kNonNegative);
+  shape.axis = in.vec3("axis", shape.axis);
+  shape.capped = in.boolean("capped", shape.capped);
+  shape.meshFile = in.string("file", shape.meshFile);
+  shape.scale = in.number("scale", shape.scale, kPositive);
+  shape.solid = in.boolean("solid", shape.solid);
+  shape.layers = in.integer("layers", shape.layers, 1, 8);
+  return shape;
+}
+
+DeformableDesc readDeformable(const ObjectReader& in) {
+  DeformableDesc d;
+  d.stiffness = in.number("stiffness", d.stiffness, kNonNegative);
+  d.damping = in.number("damping", d.damping, kNonNegative);
+  d.breakingStrain = in.number("breaking_strain", d.breakingStrain, kNonNegative);
+  d.springReach = in.number("spring_reach", d.springReach, NumberRule{1, 3, false, false});
+  d.pinned = readBoxes(in, "pinned");
+  d.cuts = readBoxes(in, "cuts");
+  return d;
+}
+
+std::vector<ObjectDesc> readObjects(const ObjectReader& root) {
+  std::vector<ObjectDesc> objects;
+  for (const ObjectReader& in : root.objectArray("objects", /*required=*/false,
+                                                 /*nonEmpty=*/false)) {
+    ObjectDesc o;
+    o.name = in.string("name", "object" + std::to_string(objects.size()));
+    o.motion = in.choice("motion", o.motion, kMotionNames);
+    o.shape = readShape(in.requiredObject("shape"));
+    o.density = in.number("density", o.density, kPositive);
+    o.spacing = in.number("spacing", o.spacing, kNonNegative);
+    o.velocity = in.vec3("velocity", o.velocity);
+    o.angularVelocity = in.vec3("angular_velocity", o.angularVelocity);
+    o.deformable = readDeformable(in.object("deformable"));
+    for (const ObjectReader& key : in.objectArray("keyframes", false, false)) {
+      KeyframeDesc k;
+      k.time = key.number("time", k.time, kNonNegative);
+      k.offset = key.vec3("offset", k.offset);
+      k.rotation = key.vec3("rotation", k.rotation);
+      o.keyframes.push_back(k);
+    }
+    objects.push_back(std::move(o));
+  }
+  return objects;
+}
+
+InteractionDesc readInteraction(const ObjectReader& in) {
+  InteractionDesc i;
+  i.influenceRatio = in.number("influence_ratio", i.influenceRatio, NumberRule{1, 4, false, false});
+  i.distanceExponent =
+      in.number("distance_exponent", i.distanceExponent, NumberRule{0, 10, false, false});
+  i.stiffness = in.optionalNumber("stiffness", kPositive);
+  i.damping = in.optionalNumber("damping", kNonNegative);
+  i.shear = in.optionalNumber("shear", kNonNegative);
+  i.maxAcceleration = in.optionalNumber("max_acceleration", kPositive);
+  i.cutAwareDamping = in.boolean("cut_aware_damping", i.cutAwareDamping);
+  return i;
+}
+
+ObjectEngineDesc readObjectEngine(const ObjectReader& in) {
+  ObjectEngineDesc e;
+  e.rate = in.number("rate", e.rate, NumberRule{0, 16, true, false});
+  e.ownThread = in.boolean("own_thread", e.ownThread);
+  return e;
+}
+
+// Object names are how fluid blocks refer to them: unique, and every reference resolves.
+void checkObjectNames(const ReadContext& context, const Scene& scene) {
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (scene.objects[i].name == scene.objects[j].name)
+        context.fail(joinIndex("objects", i) + ".name",
+                     "expected a name no other object has, got \"" + scene.objects[i].name +
+                         "\" (also objects[" + std::to_string(j) + "])");
+    }
+  }
+  for (std::size_t b = 0; b < scene.fluid.blocks.size(); ++b) {
+    const std::string& name = scene.fluid.blocks[b].inside;
+    if (name.empty()) continue;
+    bool found = false;
+    for (const ObjectDesc& o : scene.objects) found = found || o.name == name;
+    if (!found) {
+      std::string names;
+      for (const ObjectDesc& o : scene.objects) names += (names.empty() ? "" : ", ") + o.name;
+      context.fail(joinIndex("fluid.blocks", b) + ".inside", "expected the name of an object (" +
+                                                                 (names.empty() ? "none" : names) +
+                                                                 "), got \"" + name + "\"");
+    }
+  }
 }
 
 CalibrationDesc readCalibration(const ObjectReader& in) {
@@ -182,11 +287,15 @@ Scene parseScene(const json& document, const std::string& sourceName,
   scene.gravity = root.vec3("gravity", scene.gravity);
   scene.fluid = readFluid(root.requiredObject("fluid"));
   scene.walls = readWalls(root);
+  scene.objects = readObjects(root);
+  scene.interaction = readInteraction(root.object("interaction"));
+  scene.objectEngine = readObjectEngine(root.object("object_engine"));
   scene.calibration = readCalibration(root.object("calibration"));
   scene.time = readTime(root.object("time"));
   scene.output = readOutput(root.object("output"));
   scene.failure = readFailure(root.object("failure"));
   checkGeometry(context, scene);
+  checkObjectNames(context, scene);
   return scene;
 }
 

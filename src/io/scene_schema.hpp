@@ -71,6 +71,16 @@ inline constexpr NamedValue<FrameFormat> kFormatNames[] = {{"vtp", FrameFormat::
 enum class WallType { Tank };
 inline constexpr NamedValue<WallType> kWallTypeNames[] = {{"tank", WallType::Tank}};
 
+inline constexpr NamedValue<ObjectMotion> kMotionNames[] = {
+    {"rigid", ObjectMotion::Rigid},
+    {"deformable", ObjectMotion::Deformable},
+    {"kinematic", ObjectMotion::Kinematic}};
+inline constexpr NamedValue<ShapeKind> kShapeNames[] = {{"box", ShapeKind::Box},
+                                                        {"sphere", ShapeKind::Sphere},
+                                                        {"capsule", ShapeKind::Capsule},
+                                                        {"tube", ShapeKind::Tube},
+                                                        {"mesh", ShapeKind::Mesh}};
+
 template <class Enum, std::size_t N>
 const char* nameOf(Enum value, const NamedValue<Enum> (&names)[N]) {
   for (const auto& named : names) {

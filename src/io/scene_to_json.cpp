@@ -37,6 +37,7 @@ json fluidToJson(const FluidDesc& fluid) {
     json b = boxToJson(block.box);
     b["velocity"] = toJson(block.velocity);
     b["hydrostatic"] = block.hydrostatic;
+    b["inside"] = block.inside;  // "": in no object
     blocks.push_back(std::move(b));
   }
   return {
@@ -69,6 +70,57 @@ json wallsToJson(const std::vector<WallTank>& walls) {
   return out;
 }
 
+json boxesToJson(const std::vector<AxisBox>& boxes) {
+  json out = json::array();
+  for (const AxisBox& box : boxes) out.push_back(boxToJson(box));
+  return out;
+}
+
+json objectToJson(const ObjectDesc& o) {
+  const ShapeDesc& s = o.shape;
+  json keyframes = json::array();
+  for (const KeyframeDesc& k : o.keyframes)
+    keyframes.push_back(
+        {{"time", k.time}, {"offset", toJson(k.offset)}, {"rotation", toJson(k.rotation)}});
+  const DeformableDesc& d = o.deformable;
+  return {{"name", o.name},
+          {"motion", nameOf(o.motion, kMotionNames)},
+          {"shape",
+           {{"type", nameOf(s.kind, kShapeNames)},
+            {"center", toJson(s.center)},
+            {"half_extents", toJson(s.halfExtents)},
+            {"radius", s.radius},
+            {"length", s.length},
+            {"axis", toJson(s.axis)},
+            {"capped", s.capped},
+            {"file", s.meshFile},
+            {"scale", s.scale},
+            {"solid", s.solid},
+            {"layers", s.layers}}},
+          {"density", o.density},
+          {"spacing", o.spacing},
+          {"velocity", toJson(o.velocity)},
+          {"angular_velocity", toJson(o.angularVelocity)},
+          {"deformable",
+           {{"stiffness", d.stiffness},
+            {"damping", d.damping},
+            {"breaking_strain", d.breakingStrain},
+            {"spring_reach", d.springReach},
+            {"pinned", boxesToJson(d.pinned)},
+            {"cuts", boxesToJson(d.cuts)}}},
+          {"keyframes", std::move(keyframes)}};
+}
+
+json interactionToJson(const InteractionDesc& i) {
+  return {{"influence_ratio", i.influenceRatio},
+          {"distance_exponent", i.distanceExponent},
+          {"stiffness", toJson(i.stiffness)},
+          {"damping", toJson(i.damping)},
+          {"shear", toJson(i.shear)},
+          {"max_acceleration", toJson(i.maxAcceleration)},
+          {"cut_aware_damping", i.cutAwareDamping}};
+}
+
 }  // namespace
 
 json sceneToJson(const Scene& scene) {
@@ -81,6 +133,15 @@ json sceneToJson(const Scene& scene) {
       {"gravity", toJson(scene.gravity)},
       {"fluid", fluidToJson(scene.fluid)},
       {"walls", wallsToJson(scene.walls)},
+      {"objects",
+       [&] {
+         json out = json::array();
+         for (const ObjectDesc& o : scene.objects) out.push_back(objectToJson(o));
+         return out;
+       }()},
+      {"interaction", interactionToJson(scene.interaction)},
+      {"object_engine",
+       {{"rate", scene.objectEngine.rate}, {"own_thread", scene.objectEngine.ownThread}}},
       {"calibration",
        {{"mass", toJson(calibration.mass)},
         {"max_expected_speed", toJson(calibration.maxExpectedSpeed)},

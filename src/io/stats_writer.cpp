@@ -18,17 +18,22 @@ namespace {
 
 }  // namespace
 
-StatsWriter::StatsWriter(std::filesystem::path csvFile) : path_(std::move(csvFile)) {
+StatsWriter::StatsWriter(std::filesystem::path csvFile, std::vector<std::string> objectNames)
+    : path_(std::move(csvFile)), objectCount_(objectNames.size()) {
   errno = 0;
   file_.reset(std::fopen(path_.string().c_str(), "w"));
   if (!file_) throwFileError("open", path_);
-  errno = 0;
-  if (std::fputs("time,steps,dt,fluid_count,boundary_count,kinetic_energy,mean_density,"
-                 "max_density_error,max_speed,surface_count,leaked_count,removed_count,"
-                 "wall_ms_per_step\n",
-                 file_.get()) < 0) {
-    throwFileError("write", path_);
+  std::string header =
+      "time,steps,dt,fluid_count,boundary_count,kinetic_energy,mean_density,"
+      "max_density_error,max_speed,surface_count,leaked_count,removed_count,"
+      "wall_ms_per_step,contact_pairs";
+  for (const std::string& name : objectNames) {
+    for (const char* column : {"_force_x", "_force_y", "_force_z", "_com_x", "_com_y", "_com_z"})
+      header += "," + name + column;
   }
+  header += "\n";
+  errno = 0;
+  if (std::fputs(header.c_str(), file_.get()) < 0) throwFileError("write", path_);
   flushOrThrow();
 }
 
@@ -37,11 +42,22 @@ void StatsWriter::append(const FrameStats& s) {
   const int written =
       std::fprintf(file_.get(),
                    "%.9g,%" PRIu64 ",%.9g,%" PRIu64 ",%" PRIu64 ",%.9g,%.9g,%.9g,%.9g,%" PRIu64
-                   ",%" PRIu64 ",%" PRIu64 ",%.9g\n",
+                   ",%" PRIu64 ",%" PRIu64 ",%.9g,%" PRIu64,
                    s.time, s.steps, s.dt, s.fluidCount, s.boundaryCount, s.kineticEnergy,
                    s.meanDensity, s.maxDensityError, s.maxSpeed, s.surfaceCount, s.leakedCount,
-                   s.removedCount, s.wallMsPerStep);
+                   s.removedCount, s.wallMsPerStep, s.contactPairs);
   if (written < 0) throwFileError("write", path_);
+  for (std::size_t o = 0; o < objectCount_; ++o) {
+    // A row without the objects (a caller that does not track them) leaves their cells empty.
+    const bool known = o < s.objects.size();
+    const ObjectStats& object = known ? s.objects[o] : ObjectStats{};
+    for (double v : {object.fluidForce[0], object.fluidForce[1], object.fluidForce[2],
+                     object.centreOfMass[0], object.centreOfMass[1], object.centreOfMass[2]}) {
+      if ((known ? std::fprintf(file_.get(), ",%.9g", v) : std::fputs(",", file_.get())) < 0)
+        throwFileError("write", path_);
+    }
+  }
+  if (std::fputs("\n", file_.get()) < 0) throwFileError("write", path_);
   flushOrThrow();
 }
 

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "sph/stats.hpp"
 
@@ -13,7 +15,9 @@ class StatsWriter {
  public:
   // Creates (truncates) the file and writes the header. Throws std::runtime_error naming the path
   // and the system error when the file cannot be opened or written.
-  explicit StatsWriter(std::filesystem::path csvFile);
+  // Each object named gets columns of its own: <name>_force_x .. _z (the fluid's contact force
+  // on it, N) and <name>_com_x .. _z (its centre of mass, m).
+  explicit StatsWriter(std::filesystem::path csvFile, std::vector<std::string> objectNames = {});
 
   // Writes one row and flushes it, so every row appended is on disk even if the process dies
   // right after.
@@ -27,6 +31,7 @@ class StatsWriter {
   void flushOrThrow();
 
   std::filesystem::path path_;
+  std::size_t objectCount_;
   std::unique_ptr<std::FILE, FileCloser> file_;
 };
 

@@ -56,6 +56,10 @@ void writeArrayTag(std::ostream& out, const AppendedArray& array, std::uint64_t 
 
 void writeVtp(const ParticleFrame& frame, std::ostream& out) {
   const std::uint64_t n = frame.size();
+  // Frames made by hand may leave the surface flags out: they read as 0.
+  std::vector<std::uint8_t> noSurface;
+  if (frame.surface.size() != n) noSurface.assign(n, 0);
+  const std::uint8_t* surface = noSurface.empty() ? frame.surface.data() : noSurface.data();
   // Order matches the header sections below: PointData, then Points, then Verts.
   const std::vector<AppendedArray> arrays = {
       {"Float32", "velocity", 3, 3 * n * sizeof(float), frame.velocity.data(), false, 0},
@@ -63,13 +67,14 @@ void writeVtp(const ParticleFrame& frame, std::ostream& out) {
       {"Float32", "pressure", 1, n * sizeof(float), frame.pressure.data(), false, 0},
       {"UInt8", "kind", 1, n * sizeof(std::uint8_t), frame.kind.data(), false, 0},
       {"Int32", "object", 1, n * sizeof(std::int32_t), frame.object.data(), false, 0},
+      {"UInt8", "surface", 1, n * sizeof(std::uint8_t), surface, false, 0},
       {"UInt32", "id", 1, n * sizeof(std::uint32_t), frame.id.data(), false, 0},
       {"Float32", "Points", 3, 3 * n * sizeof(float), frame.position.data(), false, 0},
       {"Int64", "connectivity", 1, n * sizeof(std::int64_t), nullptr, true, 0},
       {"Int64", "offsets", 1, n * sizeof(std::int64_t), nullptr, true, 1},
   };
-  constexpr std::size_t kFirstPoints = 6;
-  constexpr std::size_t kFirstVerts = 7;
+  constexpr std::size_t kFirstPoints = 7;
+  constexpr std::size_t kFirstVerts = 8;
 
   std::vector<std::uint64_t> offsets(arrays.size());
   std::uint64_t offset = 0;

@@ -39,8 +39,9 @@ Scene boxDropScene(int particles) {
   s.fluid.viscosityModel = ViscosityModel::Artificial;
   s.fluid.viscosity = 0.05;
   const double x0 = 0.5 * (width - nx * d);
-  s.fluid.blocks.push_back(FluidBlock{
-      AxisBox{{x0, height - ny * d, x0}, {x0 + nx * d, height, x0 + nx * d}}, {0, 0, 0}});
+  FluidBlock block;
+  block.box = AxisBox{{x0, height - ny * d, x0}, {x0 + nx * d, height, x0 + nx * d}};
+  s.fluid.blocks.push_back(block);
   s.time.duration = 1.0;
   s.output.format = FrameFormat::None;
   return s;

@@ -2,6 +2,8 @@
 #pragma once
 
 #include "fluid/parameters.hpp"
+#include "interaction/object_particles.hpp"
+#include "objects/object_world.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::sim {
@@ -13,6 +15,13 @@ Calibration calibrate(const Scene& scene);
 
 fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& calibration);
 fluid::DomainParameters domainParameters(const Scene& scene);
+interaction::InteractionParameters interactionParameters(const Scene& scene,
+                                                         const Calibration& calibration);
+objects::WorldSettings worldSettings(const Scene& scene, const Calibration& calibration);
+
+// The contact time step (seed 1 §8.3): the stiffest fluid–object contact, at the centre of the
+// influence sphere, must not oscillate faster than one radian per step.
+double contactTimeStep(const Calibration& calibration, double distanceExponent);
 
 // Σ_j W(x_i - x_j) over an infinite cubic lattice of the given spacing, self included.
 double latticeKernelSum(KernelKind kernel, double supportRadius, double spacing);

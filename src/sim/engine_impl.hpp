@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "fluid/stages.hpp"
+#include "interaction/stages.hpp"
 #include "sim/fluid_engine.hpp"
 
 namespace sph::sim {
@@ -51,6 +52,42 @@ class EngineImpl final : public FluidEngine {
   }
   std::size_t integrate(float dt) override { return fluid::integrate(fluid_, dt, domain_); }
 
+  float setObjectSurface(const ObjectSurface& surface,
+                         const interaction::InteractionParameters& params) override {
+    return interaction::prepareObjectParticles(objects_, surface, params, domain_.min, domain_.max);
+  }
+  std::size_t computeContacts(const interaction::InteractionParameters& params) override {
+    return interaction::computeContacts(fluid_, grid_, objects_, containment_, params);
+  }
+  HostObjectForces downloadObjectForces() const override {
+    HostObjectForces out;
+    out.handle.resize(objects_.count);
+    out.force.resize(objects_.count);
+    B::download(objects_.handle, out.handle.data(), objects_.count);
+    B::download(objects_.force, out.force.data(), objects_.count);
+    return out;
+  }
+  void setContainers(const std::vector<std::int32_t>& byId) override {
+    const std::size_t n = byId.size();
+    std::vector<std::uint32_t> inside(n);
+    for (std::size_t k = 0; k < n; ++k) inside[k] = byId[k] >= 0 ? 1u : 0u;
+    const std::vector<Vec4> noExit(n, Vec4{0, 0, 0, 0});
+    B::upload(containment_.containerById, byId.data(), n);
+    B::upload(containment_.insideById, inside.data(), n);
+    B::upload(containment_.firstExitById, noExit.data(), n);
+  }
+  HostContainment downloadContainment() const override {
+    HostContainment out;
+    const std::size_t n = containment_.containerById.size();
+    out.containerById.resize(n);
+    out.insideById.resize(n);
+    out.firstExitById.resize(n);
+    B::download(containment_.containerById, out.containerById.data(), n);
+    B::download(containment_.insideById, out.insideById.data(), n);
+    B::download(containment_.firstExitById, out.firstExitById.data(), n);
+    return out;
+  }
+
   fluid::BadParticle findBadParticle(float maxDensityError) const override {
     return fluid::findBadParticle(fluid_, params_.restDensity, maxDensityError);
   }
@@ -96,6 +133,8 @@ class EngineImpl final : public FluidEngine {
   fluid::FluidParticles<B> fluid_;
   fluid::BoundaryParticles<B> boundary_;
   fluid::Grid<B> grid_;
+  interaction::ObjectParticles<B> objects_;
+  interaction::ContainmentState<B> containment_;
 };
 
 }  // namespace sph::sim

@@ -9,7 +9,9 @@
 
 #include "fluid/measure_step.hpp"
 #include "fluid/parameters.hpp"
+#include "interaction/object_particles.hpp"
 #include "sph/core/vec.hpp"
+#include "sph/object_exchange.hpp"
 
 namespace sph::sim {
 
@@ -21,6 +23,19 @@ struct HostParticles {
   std::vector<float> density;
   std::vector<float> pressure;
   std::vector<Vec4> acceleration;  // w: |∇c|
+};
+
+// The fluid's contact forces on the objects' surface particles, by the engine's handle.
+struct HostObjectForces {
+  std::vector<std::uint32_t> handle;
+  std::vector<Vec4> force;  // xyz: N; w: fluid particles in contact
+};
+
+// Leak tracking, by fluid particle id.
+struct HostContainment {
+  std::vector<std::int32_t> containerById;
+  std::vector<std::uint32_t> insideById;
+  std::vector<Vec4> firstExitById;
 };
 
 struct HostWalls {
@@ -41,6 +56,17 @@ class FluidEngine {
   virtual void computeForces() = 0;
   virtual fluid::StepMeasures measureStep() = 0;
   virtual std::size_t integrate(float dt) = 0;  // returns the particles clamped
+
+  // The interaction with objects (seed 1 §7). A new publication of the objects' surface
+  // particles; returns their largest speed.
+  virtual float setObjectSurface(const ObjectSurface& surface,
+                                 const interaction::InteractionParameters& params) = 0;
+  // Adds the contact forces to the fluid's accelerations; returns the pairs in contact.
+  virtual std::size_t computeContacts(const interaction::InteractionParameters& params) = 0;
+  virtual HostObjectForces downloadObjectForces() const = 0;
+  // Which object holds each fluid particle (-1: none), by id; all start inside.
+  virtual void setContainers(const std::vector<std::int32_t>& byId) = 0;
+  virtual HostContainment downloadContainment() const = 0;
 
   virtual fluid::BadParticle findBadParticle(float maxDensityError) const = 0;
   virtual HostParticles download() const = 0;

@@ -11,7 +11,8 @@ Simulation::Simulation(const Scene& scene, const SimulationOptions& options)
     : impl_(std::make_unique<Impl>(scene, options)) {}
 Simulation::~Simulation() = default;
 
-// Seed 1 §6, in our order: the forces of this step act on the positions they were computed at.
+// Seed 1 §6 and §7, in our order: the forces of this step, the fluid's own and those of contact
+// with objects, act on the positions they were computed at.
 void Simulation::step(double until) {
   Impl& s = *impl_;
   sim::FluidEngine& engine = *s.engine;
@@ -20,9 +21,10 @@ void Simulation::step(double until) {
   profile.buildGrid = timedMs([&] { s.removed += engine.buildGrid(); });
   profile.densityPressure = timedMs([&] { engine.computeDensityAndPressure(); });
   profile.forces = timedMs([&] { engine.computeForces(); });
-  // The interaction with objects (seed 1 §7) goes here.
+  profile.interaction = timedMs([&] { s.interact(); });
   profile.timeStep = timedMs([&] { s.dt = s.chooseTimeStep(until); });
   profile.integrate = timedMs([&] { s.clamped += engine.integrate(float(s.dt)); });
+  profile.objects = timedMs([&] { s.advanceObjects(); });
   s.time = (s.dt == until - s.time) ? until : s.time + s.dt;
   ++s.steps;
 }

@@ -5,11 +5,14 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "sim/calibration.hpp"
 #include "sim/fluid_engine.hpp"
+#include "sim/object_runner.hpp"
 #include "sim/sampling.hpp"
 #include "sph/core/kernels.hpp"
 #include "sph/core/time_step.hpp"
@@ -43,16 +46,30 @@ struct Simulation::Impl {
   std::uint64_t removed = 0;
   std::uint64_t clamped = 0;
   std::uint64_t initialFluid = 0;
+  // The interaction with objects; objects is null when the scene has none.
+  std::unique_ptr<sim::ObjectRunner> objects;
+  interaction::InteractionParameters interactionParams{};
+  std::uint64_t seenPublication = 0;
+  float objectMaxSpeed = 0.0f;
+  std::uint64_t contactPairs = 0;
+  sim::HostObjectForces objectForces;
+  std::vector<Vec3> fluidForceOnObject;  // by object, last step
 
   Impl(const Scene& s, const SimulationOptions& options) : scene(s) {
     calibration = sim::calibrate(scene);
     params = sim::fluidParameters(scene, calibration);
     dt = calibration.initialDt;
+    std::optional<objects::ObjectWorld> world;
+    if (!scene.objects.empty()) {
+      world.emplace(scene.objects, sim::worldSettings(scene, calibration));
+      interactionParams = sim::interactionParameters(scene, calibration);
+      checkContactReach(*world);
+    }
 
     sim::EngineSetup setup;
     setup.params = params;
     setup.domain = sim::domainParameters(scene);
-    sampleFluid(setup);
+    sampleFluid(setup, world ? &*world : nullptr);
     for (const auto& tank : scene.walls) {
       const auto points = sim::sampleTank(tank, scene.fluid.spacing, scene.gravity);
       setup.walls.insert(setup.walls.end(), points.begin(), points.end());
@@ -67,9 +84,67 @@ struct Simulation::Impl {
 
     calibration.fluidParticles = initialFluid;
     calibration.boundaryParticles = engine->wallCount();
+    if (world) {
+      calibration.objectParticles = world->particles().size();
+      engine->setContainers(containers(*world, setup.positions));
+      fluidForceOnObject.assign(world->objectCount(), Vec3{0, 0, 0});
+      objects = std::make_unique<sim::ObjectRunner>(std::move(*world), scene.objectEngine.rate,
+                                                    scene.objectEngine.ownThread);
+    }
     // Density and pressure of the initial state, so stats and frame 0 are meaningful.
     removed += engine->buildGrid();
     engine->computeDensityAndPressure();
+  }
+
+  // Contacts are found through the fluid's grid (cell edge h) from the object particles.
+  void checkContactReach(const objects::ObjectWorld& world) const {
+    float largest = 0.0f;
+    for (float r : world.particles().radius)
+      largest = std::max(largest, interaction::contactReach(interactionParams, r));
+    if (largest > params.h) {
+      std::ostringstream message;
+      message << scene.sourcePath << ": interaction.influence_ratio: the influence sphere reaches "
+              << largest << " m, past the fluid's support radius h = " << params.h
+              << " m; expected a smaller ratio or object spacing";
+      throw InputError(message.str());
+    }
+  }
+
+  // The object that holds each fluid particle at the start (the first whose interior has it).
+  static std::vector<std::int32_t> containers(const objects::ObjectWorld& world,
+                                              const std::vector<Vec3>& positions) {
+    std::vector<std::int32_t> byId(positions.size(), -1);
+    for (std::size_t o = 0; o < world.objectCount(); ++o) {
+      if (!world.enclosesVolume(o)) continue;
+      for (std::size_t i = 0; i < positions.size(); ++i) {
+        if (byId[i] < 0 && world.interiorContains(o, positions[i], 0.0f))
+          byId[i] = static_cast<std::int32_t>(o);
+      }
+    }
+    return byId;
+  }
+
+  // Seed 1 §7, steps 2-4: the engine's newest surface particles, collisions, contact forces.
+  void interact() {
+    if (!objects) return;
+    objects->wait();
+    objects->exchange().readIfNew(seenPublication, [&](const ObjectSurface& surface) {
+      objectMaxSpeed = engine->setObjectSurface(surface, interactionParams);
+    });
+    contactPairs = engine->computeContacts(interactionParams);
+    objectForces = engine->downloadObjectForces();
+  }
+
+  // The engine receives this step's forces and takes its own step(s) over dt.
+  void advanceObjects() {
+    if (!objects) return;
+    const std::size_t n = objectForces.handle.size();
+    objects->exchange().depositForces(objectForces.handle.data(), objectForces.force.data(), n, dt);
+    const objects::ParticleState& particles = objects->world().particles();
+    std::fill(fluidForceOnObject.begin(), fluidForceOnObject.end(), Vec3{0, 0, 0});
+    for (std::size_t k = 0; k < n; ++k)
+      fluidForceOnObject[particles.object[objectForces.handle[k]]] += xyz(objectForces.force[k]);
+    objects->advance(dt);
   }
 
   static bool useCuda(const SimulationOptions& options) {
@@ -77,15 +152,34 @@ struct Simulation::Impl {
     return options.backend == Backend::Auto && !queryGpus().devices.empty();
   }
 
-  void sampleFluid(sim::EngineSetup& setup) const {
+  void sampleFluid(sim::EngineSetup& setup, const objects::ObjectWorld* world) const {
     for (const auto& block : scene.fluid.blocks) {
       auto points = sim::sampleBlock(block.box, scene.fluid.spacing);
+      if (!block.inside.empty()) keepInside(points, block.inside, world);
       if (block.hydrostatic)
         sim::compressHydrostatically(points, block.box, scene.gravity, calibration.soundSpeed);
       const Vec3 v{float(block.velocity[0]), float(block.velocity[1]), float(block.velocity[2])};
       setup.positions.insert(setup.positions.end(), points.begin(), points.end());
       setup.velocities.insert(setup.velocities.end(), points.size(), v);
     }
+  }
+
+  // Only the lattice points that start clear of the object's influence spheres.
+  void keepInside(std::vector<Vec3>& points, const std::string& name,
+                  const objects::ObjectWorld* world) const {
+    const std::size_t o = objectIndex(name);
+    const float margin = interaction::contactReach(
+        interactionParams, world->particles().radius[world->info(o).firstParticle]);
+    points.erase(std::remove_if(points.begin(), points.end(),
+                                [&](Vec3 p) { return !world->interiorContains(o, p, margin); }),
+                 points.end());
+  }
+
+  std::size_t objectIndex(const std::string& name) const {
+    for (std::size_t o = 0; o < scene.objects.size(); ++o)
+      if (scene.objects[o].name == name) return o;
+    throw InputError(scene.sourcePath + ": fluid.blocks[].inside: no object is named '" + name +
+                     "'");
   }
 
   double chooseTimeStep(double until) {
@@ -99,7 +193,7 @@ struct Simulation::Impl {
             : std::min({cflTimeStep(t.cfl, params.h, params.soundSpeed, m.maxSpeed),
                         forceTimeStep(t.forceFactor, params.h, m.maxAcceleration),
                         viscousTimeStep(t.viscousFactor, params.h, calibration.kinematicViscosity),
-                        t.maxDt});
+                        objects ? objectTimeStep() : HUGE_VAL, t.maxDt});
     const double remaining = until - time;
     // Land exactly on `until` rather than leave a sliver of a step for later.
     if (next >= remaining)
@@ -107,6 +201,15 @@ struct Simulation::Impl {
     else if (next > 0.5 * remaining)
       next = 0.5 * remaining;
     return next;
+  }
+
+  // Seed 1 §8.3: contacts stay resolved, and no object particle moves more than a quarter of
+  // the fluid's radius in a step, so nothing tunnels.
+  double objectTimeStep() const {
+    const double contact = sim::contactTimeStep(calibration, scene.interaction.distanceExponent);
+    const double travel =
+        objectMaxSpeed > 0.0f ? 0.25 * interactionParams.fluidRadius / objectMaxSpeed : HUGE_VAL;
+    return std::min(contact, travel);
   }
 
   [[noreturn]] void fail(float bound) {

@@ -28,26 +28,31 @@ struct FrameBuilder {
     out.pressure.reserve(n);
     out.kind.reserve(n);
     out.object.reserve(n);
+    out.surface.reserve(n);
   }
-  void push(std::uint32_t id, Vec4 x, Vec4 v, float rho, float p, ParticleKind kind) {
+  void push(std::uint32_t id, Vec4 x, Vec4 v, float rho, float p, ParticleKind kind,
+            std::int32_t object = -1, bool surface = false) {
     out.id.push_back(id);
     out.position.insert(out.position.end(), {x.x, x.y, x.z});
     out.velocity.insert(out.velocity.end(), {v.x, v.y, v.z});
     out.density.push_back(rho);
     out.pressure.push_back(p);
     out.kind.push_back(static_cast<std::uint8_t>(kind));
-    out.object.push_back(-1);
+    out.object.push_back(object);
+    out.surface.push_back(surface ? 1 : 0);
   }
 };
 
 // Fluid ids are 0 .. initialFluid-1 with gaps where particles were removed.
-void appendFluid(FrameBuilder& b, const sim::HostParticles& f, std::uint64_t initialFluid) {
+void appendFluid(FrameBuilder& b, const sim::HostParticles& f, std::uint64_t initialFluid,
+                 float surfaceThreshold) {
   std::vector<std::int64_t> slotOfId(initialFluid, -1);
   for (std::size_t i = 0; i < f.id.size(); ++i) slotOfId[f.id[i]] = static_cast<std::int64_t>(i);
   for (std::int64_t slot : slotOfId) {
     if (slot < 0) continue;
     const auto i = static_cast<std::size_t>(slot);
-    b.push(f.id[i], f.position[i], f.velocity[i], f.density[i], f.pressure[i], ParticleKind::Fluid);
+    b.push(f.id[i], f.position[i], f.velocity[i], f.density[i], f.pressure[i], ParticleKind::Fluid,
+           -1, f.acceleration[i].w > surfaceThreshold);
   }
 }
 
@@ -60,7 +65,70 @@ void appendWalls(FrameBuilder& b, const sim::HostWalls& w, std::uint64_t firstId
     b.push(w.id[k], w.position[k], Vec4{0, 0, 0, 0}, restDensity, 0.0f, ParticleKind::Boundary);
 }
 
+// Object particle ids follow the walls'.
+void appendObjects(FrameBuilder& b, const objects::ParticleState& p, std::uint64_t firstId,
+                   float restDensity) {
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    b.push(static_cast<std::uint32_t>(firstId + k), makeVec4(p.position[k]),
+           makeVec4(getenv("DBGN") ? p.normal[k] : p.velocity[k]), restDensity, 0.0f,
+           ParticleKind::Object, p.object[k], p.surface[k] != 0);
+  }
+}
+
 }  // namespace
+
+std::vector<ObjectStats> Simulation::objectStats() const {
+  const Impl& s = *impl_;
+  std::vector<ObjectStats> out;
+  if (!s.objects) return out;
+  s.objects->wait();
+  const objects::ObjectWorld& world = s.objects->world();
+  for (std::size_t o = 0; o < world.objectCount(); ++o) {
+    const objects::ObjectInfo info = world.info(o);
+    ObjectStats stats;
+    stats.name = info.name;
+    stats.mass = info.mass;
+    stats.centreOfMass = {info.centreOfMass.x, info.centreOfMass.y, info.centreOfMass.z};
+    stats.velocity = {info.velocity.x, info.velocity.y, info.velocity.z};
+    const Vec3 f = s.fluidForceOnObject[o];
+    stats.fluidForce = {f.x, f.y, f.z};
+    stats.brokenSprings = info.brokenSprings;
+    out.push_back(stats);
+  }
+  return out;
+}
+
+std::uint64_t Simulation::leakedCount() const {
+  const Impl& s = *impl_;
+  if (!s.objects) return 0;
+  const sim::HostContainment c = s.engine->downloadContainment();
+  std::uint64_t leaked = 0;
+  for (std::size_t k = 0; k < c.containerById.size(); ++k)
+    leaked += (c.containerById[k] >= 0 && c.insideById[k] == 0) ? 1 : 0;
+  return leaked;
+}
+
+std::vector<std::uint32_t> Simulation::leakedIds() const {
+  const Impl& s = *impl_;
+  std::vector<std::uint32_t> out;
+  if (!s.objects) return out;
+  const sim::HostContainment c = s.engine->downloadContainment();
+  for (std::size_t k = 0; k < c.containerById.size(); ++k)
+    if (c.containerById[k] >= 0 && c.insideById[k] == 0) out.push_back(std::uint32_t(k));
+  return out;
+}
+
+std::vector<float> Simulation::leakPositions() const {
+  const Impl& s = *impl_;
+  std::vector<float> out;
+  if (!s.objects) return out;
+  const sim::HostContainment c = s.engine->downloadContainment();
+  for (std::size_t k = 0; k < c.containerById.size(); ++k) {
+    const Vec4 x = c.firstExitById[k];
+    if (x.w != 0.0f) out.insert(out.end(), {x.x, x.y, x.z});
+  }
+  return out;
+}
 
 FrameStats Simulation::stats() const {
   const Impl& s = *impl_;
@@ -96,8 +164,10 @@ FrameStats Simulation::stats() const {
   out.maxDensityError = sums.maxDensityError;
   out.maxSpeed = std::sqrt(double(sums.maxSpeedSquared));
   out.surfaceCount = sums.surface;
-  out.leakedCount = 0;  // no objects yet hold fluid
+  out.leakedCount = leakedCount();
   out.removedCount = s.removed;
+  out.contactPairs = s.contactPairs;
+  out.objects = objectStats();
   return out;
 }
 
@@ -107,10 +177,16 @@ ParticleFrame Simulation::frame(bool includeBoundary) const {
   FrameBuilder b;
   b.out.time = s.time;
   b.out.step = s.steps;
-  b.reserve(f.id.size() + (includeBoundary ? s.engine->wallCount() : 0));
-  appendFluid(b, f, s.initialFluid);
+  b.reserve(f.id.size() + (includeBoundary ? s.engine->wallCount() : 0) +
+            s.calibration.objectParticles);
+  appendFluid(b, f, s.initialFluid, s.params.surfaceThreshold);
   if (includeBoundary)
     appendWalls(b, s.engine->downloadWalls(), s.initialFluid, s.params.restDensity);
+  if (s.objects) {
+    s.objects->wait();
+    appendObjects(b, s.objects->world().particles(), s.initialFluid + s.engine->wallCount(),
+                  s.params.restDensity);
+  }
   return std::move(b.out);
 }
 

@@ -45,6 +45,7 @@ ParticleFrame makeFrame() {
     f.pressure.push_back(-0.1f * static_cast<float>(i) + 3e6f);
     f.kind.push_back(static_cast<std::uint8_t>(i % 2));
     f.object.push_back(i == 4 ? 3 : -1);
+    f.surface.push_back(static_cast<std::uint8_t>(i % 3 == 0 ? 1 : 0));
   }
   return f;
 }
@@ -70,10 +71,10 @@ TEST_F(CsvFrameWriterTest, RowsRoundTripExactly) {
   const std::vector<std::string> lines = readLines(file);
 
   ASSERT_EQ(lines.size(), 1 + frame.size());
-  EXPECT_EQ(lines[0], "id,kind,object,x,y,z,vx,vy,vz,density,pressure");
+  EXPECT_EQ(lines[0], "id,kind,object,x,y,z,vx,vy,vz,density,pressure,surface");
   for (std::size_t i = 0; i < frame.size(); ++i) {
     const std::vector<std::string> f = split(lines[1 + i]);
-    ASSERT_EQ(f.size(), 11u) << lines[1 + i];
+    ASSERT_EQ(f.size(), 12u) << lines[1 + i];
     EXPECT_EQ(std::stoul(f[0]), frame.id[i]);
     EXPECT_EQ(std::stoi(f[1]), frame.kind[i]);
     EXPECT_EQ(std::stoi(f[2]), frame.object[i]);
@@ -83,6 +84,7 @@ TEST_F(CsvFrameWriterTest, RowsRoundTripExactly) {
     }
     EXPECT_EQ(std::strtof(f[9].c_str(), nullptr), frame.density[i]);
     EXPECT_EQ(std::strtof(f[10].c_str(), nullptr), frame.pressure[i]);
+    EXPECT_EQ(std::stoi(f[11]), frame.surface[i]);
   }
 }
 
@@ -90,7 +92,7 @@ TEST_F(CsvFrameWriterTest, EmptyFrameHasHeaderOnly) {
   const fs::path file = dir_ / "empty.csv";
   writeFrame(ParticleFrame{}, FrameFormat::Csv, file);
   EXPECT_EQ(readLines(file),
-            std::vector<std::string>{"id,kind,object,x,y,z,vx,vy,vz,density,pressure"});
+            std::vector<std::string>{"id,kind,object,x,y,z,vx,vy,vz,density,pressure,surface"});
 }
 
 TEST_F(CsvFrameWriterTest, MissingDirectoryThrowsNamingThePath) {

@@ -47,6 +47,7 @@ ParticleFrame makeFrame() {
     f.pressure.push_back(101.5f * static_cast<float>(i) - 7.0f);
     f.kind.push_back(static_cast<std::uint8_t>(i == 1 ? 1 : 0));
     f.object.push_back(i == 2 ? 5 : -1);
+    f.surface.push_back(static_cast<std::uint8_t>(i == 0 ? 1 : 0));
   }
   return f;
 }
@@ -78,11 +79,19 @@ T take(const std::string& body, std::size_t& at) {
   return value;
 }
 
-const std::vector<std::string> kExpectedProperties = {
-    "property float x",       "property float y",        "property float z",
-    "property float vx",      "property float vy",       "property float vz",
-    "property float density", "property float pressure", "property uchar kind",
-    "property int object",    "property uint id",        "end_header"};
+const std::vector<std::string> kExpectedProperties = {"property float x",
+                                                      "property float y",
+                                                      "property float z",
+                                                      "property float vx",
+                                                      "property float vy",
+                                                      "property float vz",
+                                                      "property float density",
+                                                      "property float pressure",
+                                                      "property uchar kind",
+                                                      "property int object",
+                                                      "property uchar surface",
+                                                      "property uint id",
+                                                      "end_header"};
 
 TEST_F(PlyWriterTest, HeaderAndEveryVertexReadBack) {
   const ParticleFrame frame = makeFrame();
@@ -105,7 +114,7 @@ TEST_F(PlyWriterTest, HeaderAndEveryVertexReadBack) {
                                             ply.headerLines.end());
   EXPECT_EQ(properties, kExpectedProperties);
 
-  constexpr std::size_t kVertexBytes = 8 * 4 + 1 + 4 + 4;
+  constexpr std::size_t kVertexBytes = 8 * 4 + 1 + 4 + 1 + 4;
   ASSERT_EQ(ply.body.size(), frame.size() * kVertexBytes);
   std::size_t at = 0;
   for (std::size_t i = 0; i < frame.size(); ++i) {
@@ -115,6 +124,7 @@ TEST_F(PlyWriterTest, HeaderAndEveryVertexReadBack) {
     EXPECT_EQ(take<float>(ply.body, at), frame.pressure[i]);
     EXPECT_EQ(take<std::uint8_t>(ply.body, at), frame.kind[i]);
     EXPECT_EQ(take<std::int32_t>(ply.body, at), frame.object[i]);
+    EXPECT_EQ(take<std::uint8_t>(ply.body, at), frame.surface[i]);
     EXPECT_EQ(take<std::uint32_t>(ply.body, at), frame.id[i]);
   }
 }

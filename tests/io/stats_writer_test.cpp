@@ -29,7 +29,7 @@ class StatsWriterTest : public testing::Test {
 
 const char* const kHeader =
     "time,steps,dt,fluid_count,boundary_count,kinetic_energy,mean_density,max_density_error,"
-    "max_speed,surface_count,leaked_count,removed_count,wall_ms_per_step";
+    "max_speed,surface_count,leaked_count,removed_count,wall_ms_per_step,contact_pairs";
 
 std::vector<std::string> readLines(const fs::path& file) {
   std::ifstream in(file);
@@ -60,6 +60,7 @@ FrameStats makeStats(int row) {
   s.leakedCount = static_cast<std::uint64_t>(row);
   s.removedCount = 12345678901234ull;
   s.wallMsPerStep = 3.5;
+  s.contactPairs = 77;
   return s;
 }
 
@@ -75,13 +76,42 @@ TEST_F(StatsWriterTest, HeaderThenOneFlushedRowPerAppend) {
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0], kHeader);
   EXPECT_EQ(lines[1],
-            "0.25,101,0.00015,8000,1234,1.5,1000.125,0.0125,2.75,300,1,12345678901234,3.5");
+            "0.25,101,0.00015,8000,1234,1.5,1000.125,0.0125,2.75,300,1,12345678901234,3.5,77");
   const std::vector<std::string> fields = split(lines[2]);
-  ASSERT_EQ(fields.size(), 13u);
+  ASSERT_EQ(fields.size(), 14u);
   EXPECT_EQ(std::stod(fields[0]), 0.5);
   EXPECT_EQ(std::stoull(fields[1]), 201u);
   EXPECT_EQ(std::stod(fields[5]), 2.5);
   EXPECT_EQ(std::stoull(fields[10]), 2u);
+}
+
+TEST_F(StatsWriterTest, EachObjectHasForceAndCentreColumns) {
+  const fs::path file = dir_ / "stats.csv";
+  StatsWriter writer(file, {"box", "ball"});
+  FrameStats s = makeStats(1);
+  ObjectStats box;
+  box.name = "box";
+  box.fluidForce = {1.5, -2.0, 0.25};
+  box.centreOfMass = {0.1, 0.2, 0.3};
+  ObjectStats ball;
+  ball.name = "ball";
+  ball.fluidForce = {0, 9.75, 0};
+  ball.centreOfMass = {-1, 0, 1};
+  s.objects = {box, ball};
+  writer.append(s);
+  const std::vector<std::string> lines = readLines(file);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], std::string(kHeader) +
+                          ",box_force_x,box_force_y,box_force_z,box_com_x,box_com_y,box_com_z"
+                          ",ball_force_x,ball_force_y,ball_force_z,ball_com_x,ball_com_y,"
+                          "ball_com_z");
+  const std::vector<std::string> fields = split(lines[1]);
+  ASSERT_EQ(fields.size(), 14u + 12u);
+  EXPECT_EQ(std::stod(fields[14]), 1.5);
+  EXPECT_EQ(std::stod(fields[16]), 0.25);
+  EXPECT_EQ(std::stod(fields[19]), 0.3);
+  EXPECT_EQ(std::stod(fields[21]), 9.75);
+  EXPECT_EQ(std::stod(fields[23]), -1.0);
 }
 
 TEST_F(StatsWriterTest, NewWriterStartsAFreshFile) {

@@ -48,6 +48,7 @@ ParticleFrame makeFrame() {
     f.pressure.push_back(-20.0f + 3.3f * static_cast<float>(i));
     f.kind.push_back(static_cast<std::uint8_t>(i % 2));
     f.object.push_back(i == 3 ? 2 : -1);
+    f.surface.push_back(static_cast<std::uint8_t>(i == 1 ? 1 : 0));
   }
   return f;
 }
@@ -149,7 +150,7 @@ TEST_F(VtpWriterTest, EveryArrayReadsBackAsWritten) {
   EXPECT_EQ(vtp.points, 4u);
   EXPECT_EQ(vtp.verts, 4u);
   EXPECT_EQ(vtp.time, "0.1");
-  ASSERT_EQ(vtp.arrays.size(), 9u);
+  ASSERT_EQ(vtp.arrays.size(), 10u);
   EXPECT_EQ(vtp.trailer, "\n  </AppendedData>\n</VTKFile>\n");
 
   const auto& arrays = vtp.arrays;
@@ -165,6 +166,8 @@ TEST_F(VtpWriterTest, EveryArrayReadsBackAsWritten) {
   EXPECT_EQ(values<std::uint8_t>(arrays.at("kind")), frame.kind);
   EXPECT_EQ(arrays.at("object").type, "Int32");
   EXPECT_EQ(values<std::int32_t>(arrays.at("object")), frame.object);
+  EXPECT_EQ(arrays.at("surface").type, "UInt8");
+  EXPECT_EQ(values<std::uint8_t>(arrays.at("surface")), frame.surface);
   EXPECT_EQ(arrays.at("id").type, "UInt32");
   EXPECT_EQ(values<std::uint32_t>(arrays.at("id")), frame.id);
   EXPECT_EQ(arrays.at("connectivity").type, "Int64");
@@ -180,7 +183,7 @@ TEST_F(VtpWriterTest, EmptyFrameIsValid) {
   const ParsedVtp vtp = parseVtp(readAll(file));
   EXPECT_EQ(vtp.points, 0u);
   EXPECT_EQ(vtp.verts, 0u);
-  ASSERT_EQ(vtp.arrays.size(), 9u);
+  ASSERT_EQ(vtp.arrays.size(), 10u);
   for (const auto& [name, array] : vtp.arrays) EXPECT_TRUE(array.bytes.empty()) << name;
   EXPECT_EQ(vtp.trailer, "\n  </AppendedData>\n</VTKFile>\n");
 }

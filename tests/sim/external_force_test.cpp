@@ -16,7 +16,7 @@ Scene freeBlock() {
   s.calibration.speedOfSound = 10.0;
   s.fluid.spacing = 0.01;
   s.domain.box = {{-1, -1, -1}, {1, 1, 1}};
-  s.fluid.blocks.push_back({{{0, 0, 0}, {0.05, 0.05, 0.05}}, {0, 0, 0}});
+  s.fluid.blocks.push_back({{{0, 0, 0}, {0.05, 0.05, 0.05}}, {0, 0, 0}, false, ""});
   return s;
 }
 

@@ -33,7 +33,7 @@ Scene fallingThroughTheFloor(OutsidePolicy policy) {
   s.fluid.spacing = 0.01;
   s.domain.box = {{0, 0, 0}, {0.2, 0.2, 0.2}};
   s.domain.outside = policy;
-  s.fluid.blocks.push_back({{{0.05, 0.02, 0.05}, {0.15, 0.1, 0.15}}, {0, -1.0, 0}});
+  s.fluid.blocks.push_back({{{0.05, 0.02, 0.05}, {0.15, 0.1, 0.15}}, {0, -1.0, 0}, false, ""});
   return s;
 }
 

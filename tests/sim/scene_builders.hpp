@@ -14,7 +14,7 @@ inline Scene restingTank(double spacing, double width, double height) {
   s.fluid.viscosity = 0.1;
   s.fluid.wallFriction = 1.0;
   s.domain.box = {{-0.1, -0.1, -0.1}, {width + 0.1, 2.0 * height + 0.1, width + 0.1}};
-  s.fluid.blocks.push_back({{{0, 0, 0}, {width, height, width}}, {0, 0, 0}});
+  s.fluid.blocks.push_back({{{0, 0, 0}, {width, height, width}}, {0, 0, 0}, false, ""});
   s.walls.push_back({{{0, 0, 0}, {width, 1.25 * height, width}}, 2, false});
   return s;
 }
@@ -29,8 +29,8 @@ inline Scene collidingBlocks(PressureForm form) {
   s.fluid.pressureForm = form;
   s.fluid.viscosity = 0.1;
   s.domain.box = {{-1, -1, -1}, {1, 1, 1}};
-  s.fluid.blocks.push_back({{{-0.12, 0, 0}, {-0.02, 0.1, 0.08}}, {1.0, 0.2, 0}});
-  s.fluid.blocks.push_back({{{0.0, 0.03, 0.02}, {0.06, 0.09, 0.1}}, {-1.5, 0, 0.3}});
+  s.fluid.blocks.push_back({{{-0.12, 0, 0}, {-0.02, 0.1, 0.08}}, {1.0, 0.2, 0}, false, ""});
+  s.fluid.blocks.push_back({{{0.0, 0.03, 0.02}, {0.06, 0.09, 0.1}}, {-1.5, 0, 0.3}, false, ""});
   return s;
 }
 

@@ -19,7 +19,7 @@ Scene floatingCube(double surfaceTension) {
   s.fluid.viscosity = 0.5;
   s.fluid.surfaceTension = surfaceTension;
   s.domain.box = {{-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}};
-  s.fluid.blocks.push_back({{{-0.03, -0.03, -0.03}, {0.03, 0.03, 0.03}}, {0, 0, 0}});
+  s.fluid.blocks.push_back({{{-0.03, -0.03, -0.03}, {0.03, 0.03, 0.03}}, {0, 0, 0}, false, ""});
   return s;
 }
 

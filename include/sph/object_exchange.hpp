@@ -1,0 +1,87 @@
+// The exchange between the fluid and a physics engine for particle-based objects (seed 1 §4.3,
+// §7.2, figure 1). Any engine that can publish its objects' surface particles and accept forces
+// on them can be coupled: the built-in one (src/objects) or your own.
+//
+// Both directions are double-buffered, so the engine may run in its own thread at its own
+// rate. The engine fills `back()` and calls `publish()`; the fluid reads the newest publication
+// at its next step. The fluid deposits the contact force on each surface particle at every
+// fluid step; the forces accumulate as impulses until the engine takes them, as the mean force
+// over the time they span.
+//
+//   // engine thread, each engine step:
+//   double span = exchange.takeForces(forces);   // N, by handle
+//   engine.step(dt, forces);
+//   ObjectSurface& s = exchange.back();
+//   s.clear(); for (each surface particle) s.add(...);
+//   exchange.publish();
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <vector>
+
+#include "sph/core/vec.hpp"
+
+namespace sph {
+
+// The surface particles of every object, as an engine publishes them.
+struct ObjectSurface {
+  std::vector<Vec4> position;         // xyz (m); w: particle radius (m)
+  std::vector<Vec4> velocity;         // xyz (m/s); w unused
+  std::vector<Vec4> normal;           // outward unit normal of the object at the particle
+  std::vector<std::uint32_t> handle;  // the engine's index: forces come back by it
+  std::vector<std::int32_t> object;   // object id, 0-based
+  std::vector<std::uint8_t> cut;      // 1: the object is torn here (no contact damping)
+  double time = 0.0;                  // the engine's time, s
+
+  std::size_t size() const { return handle.size(); }
+  void clear();
+  void add(Vec3 position, Vec3 velocity, float radius, Vec3 normal, std::uint32_t handle,
+           std::int32_t object, bool cut);
+};
+
+class ObjectExchange {
+ public:
+  // Handles run from 0 to handleCount - 1.
+  explicit ObjectExchange(std::size_t handleCount);
+  std::size_t handleCount() const { return handleCount_; }
+
+  // --- the engine's side ---
+  // The buffer to fill; only the engine touches it until publish().
+  ObjectSurface& back() { return back_; }
+  // Makes back() the publication the fluid reads next.
+  void publish();
+  // The mean force (N) on each particle, by handle, over the fluid steps deposited since the
+  // last call; returns the time they span (s). When no fluid step was deposited since, gives
+  // the previous mean again and returns 0.
+  double takeForces(std::vector<Vec3>& forceByHandle);
+
+  // --- the fluid's side ---
+  // Calls read(const ObjectSurface&) on the newest publication, if it is newer than
+  // `seenVersion`, and updates `seenVersion`. Returns whether it read one.
+  template <class Read>
+  bool readIfNew(std::uint64_t& seenVersion, Read&& read) {
+    std::lock_guard<std::mutex> lock(frontMutex_);
+    if (version_ == seenVersion) return false;
+    read(static_cast<const ObjectSurface&>(front_));
+    seenVersion = version_;
+    return true;
+  }
+  // Adds force[k] × dt to the impulse of particle handle[k], for k < count.
+  void depositForces(const std::uint32_t* handle, const Vec4* force, std::size_t count, double dt);
+
+ private:
+  std::size_t handleCount_;
+  ObjectSurface back_;
+  ObjectSurface front_;
+  std::uint64_t version_ = 0;
+  std::mutex frontMutex_;
+
+  std::vector<Vec3> impulse_;  // N·s, by handle, since the last take
+  double span_ = 0.0;
+  std::vector<Vec3> lastMean_;
+  std::mutex forceMutex_;
+};
+
+}  // namespace sph

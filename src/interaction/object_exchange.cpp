@@ -1,0 +1,68 @@
+#include "sph/object_exchange.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace sph {
+
+void ObjectSurface::clear() {
+  position.clear();
+  velocity.clear();
+  normal.clear();
+  handle.clear();
+  object.clear();
+  cut.clear();
+}
+
+void ObjectSurface::add(Vec3 x, Vec3 v, float radius, Vec3 n, std::uint32_t h, std::int32_t o,
+                        bool isCut) {
+  position.push_back(makeVec4(x, radius));
+  velocity.push_back(makeVec4(v));
+  normal.push_back(makeVec4(n));
+  handle.push_back(h);
+  object.push_back(o);
+  cut.push_back(isCut ? 1 : 0);
+}
+
+ObjectExchange::ObjectExchange(std::size_t handleCount)
+    : handleCount_(handleCount),
+      impulse_(handleCount, Vec3{0, 0, 0}),
+      lastMean_(handleCount, Vec3{0, 0, 0}) {}
+
+void ObjectExchange::publish() {
+  for (std::uint32_t h : back_.handle) {
+    if (h >= handleCount_)
+      throw std::out_of_range("ObjectExchange::publish: handle " + std::to_string(h) +
+                              " is not below the handle count " + std::to_string(handleCount_));
+  }
+  std::lock_guard<std::mutex> lock(frontMutex_);
+  std::swap(front_, back_);
+  ++version_;
+}
+
+double ObjectExchange::takeForces(std::vector<Vec3>& forceByHandle) {
+  std::lock_guard<std::mutex> lock(forceMutex_);
+  const double span = span_;
+  if (span > 0.0) {
+    const float inverse = static_cast<float>(1.0 / span);
+    for (std::size_t h = 0; h < handleCount_; ++h) {
+      lastMean_[h] = impulse_[h] * inverse;
+      impulse_[h] = Vec3{0, 0, 0};
+    }
+    span_ = 0.0;
+  }
+  forceByHandle = lastMean_;
+  return span;
+}
+
+void ObjectExchange::depositForces(const std::uint32_t* handle, const Vec4* force,
+                                   std::size_t count, double dt) {
+  const float step = static_cast<float>(dt);
+  std::lock_guard<std::mutex> lock(forceMutex_);
+  for (std::size_t k = 0; k < count; ++k) impulse_[handle[k]] += xyz(force[k]) * step;
+  span_ += dt;
+}
+
+}  // namespace sph

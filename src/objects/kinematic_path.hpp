@@ -1,0 +1,36 @@
+// The scripted path of a kinematic object: keyframes of offset and rotation (axis × angle) from
+// the initial pose about the initial centre of mass, linear in between, held after the last.
+#pragma once
+
+#include <vector>
+
+#include "objects/math3d.hpp"
+#include "sph/scene.hpp"
+
+namespace sph::objects {
+
+struct KinematicPose {
+  DVec3 offset;           // m
+  Mat3 rotation;          // about the initial centre of mass
+  DVec3 velocity;         // d offset / dt, m/s
+  DVec3 angularVelocity;  // world frame, rad/s
+};
+
+class KinematicPath {
+ public:
+  KinematicPath() = default;
+  // Keyframe times must be ≥ 0 and increasing (checked by validateKeyframes).
+  explicit KinematicPath(std::vector<KeyframeDesc> keyframes);
+
+  // The pose at time t and its derivative going forward from t (the segment that starts at or
+  // contains t), so that contacts see the motion about to happen.
+  KinematicPose at(double t) const;
+
+ private:
+  std::vector<KeyframeDesc> keys_;  // with the identity prepended at t = 0 when the first is later
+};
+
+// Throws InputError "<where>.keyframes[k].time: ..." for negative or non-increasing times.
+void validateKeyframes(const std::vector<KeyframeDesc>& keyframes, const std::string& where);
+
+}  // namespace sph::objects

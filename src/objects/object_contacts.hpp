@@ -1,0 +1,28 @@
+// Contact between particles of different objects by the discrete element method
+// (core/contact.hpp, seed 1 eqs. 13-15), found through a uniform grid rebuilt every substep.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "objects/math3d.hpp"
+#include "objects/point_grid.hpp"
+#include "sph/core/contact.hpp"
+
+namespace sph::objects {
+
+struct ContactParticles {
+  const std::vector<DVec3>& position;
+  const std::vector<DVec3>& velocity;
+  const std::vector<float>& radius;
+  const std::vector<std::int32_t>& object;
+  const std::vector<std::uint8_t>& movable;  // 0: kinematic or pinned
+};
+
+// Adds to `force` the contact force of every overlapping pair of particles of different objects
+// of which at least one can move: equal and opposite, full spring, damped. Returns the number
+// of touching pairs.
+std::size_t addContactForces(const ContactCoefficients& coefficients, const ContactParticles& p,
+                             float maxRadius, PointGrid& grid, std::vector<DVec3>& force);
+
+}  // namespace sph::objects

@@ -1,0 +1,443 @@
+#include "objects/object_world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "objects/kinematic_path.hpp"
+#include "objects/math3d.hpp"
+#include "objects/object_contacts.hpp"
+#include "objects/point_grid.hpp"
+#include "objects/rigid_body.hpp"
+#include "objects/shape_sampling.hpp"
+#include "objects/springs.hpp"
+#include "sph/error.hpp"
+
+namespace sph::objects {
+
+namespace {
+
+// Substeps resolve the fastest oscillation with h = kStepPerOmega / ω, about 1/21 of its
+// period. Symplectic Euler alone is stable to ω h < 2, with critical damping on the same spring
+// to ω h < 0.83; a particle held by many springs (up to 18 at reach 1.5) oscillates up to ~2.5×
+// faster than one spring on its own, hence the margin.
+constexpr double kStepPerOmega = 0.3;
+// Explicit damping c on a mass m is stable for c h / m < 2; several contacts or springs add up.
+constexpr double kStepPerDampingRate = 0.25;
+// No particle moves more than this fraction of its radius per substep (seed 1 §8.3 tunnelling).
+constexpr double kMaxTravelPerRadius = 0.25;
+// Default spring stiffness: the object's weight hung on one spring strains it by 1 %.
+constexpr double kDefaultWeightStrain = 0.01;
+constexpr double kStandardGravity = 9.80665;  // for the default stiffness in zero gravity
+// A diverging run must not turn one step into an endless loop of substeps.
+constexpr double kMaxSubsteps = 1e6;
+
+// Whether the segment from a to b passes through the box (the slab test).
+bool segmentMeetsBox(const AxisBox& box, DVec3 a, DVec3 b) {
+  const double from[3] = {a.x, a.y, a.z}, to[3] = {b.x, b.y, b.z};
+  double enter = 0.0, leave = 1.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double d = to[axis] - from[axis];
+    if (d == 0.0) {
+      if (from[axis] < box.min[axis] || from[axis] > box.max[axis]) return false;
+      continue;
+    }
+    double t0 = (box.min[axis] - from[axis]) / d, t1 = (box.max[axis] - from[axis]) / d;
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+    if (enter > leave) return false;
+  }
+  return true;
+}
+
+bool insideBox(const AxisBox& box, DVec3 p) {
+  return p.x >= box.min[0] && p.x <= box.max[0] && p.y >= box.min[1] && p.y <= box.max[1] &&
+         p.z >= box.min[2] && p.z <= box.max[2];
+}
+
+void requireNonNegative(double value, const std::string& where, const std::string& key) {
+  if (!(value >= 0.0) || !std::isfinite(value))
+    throw InputError(where + "." + key + ": expected a number ≥ 0, got " + formatNumber(value));
+}
+
+// The object's spacing (its own, else the fluid's), after checking it and the density.
+double checkedSpacing(const ObjectDesc& desc, double defaultSpacing, const std::string& where) {
+  if (desc.spacing < 0.0 || !std::isfinite(desc.spacing))
+    throw InputError(where + ".spacing: expected a positive number, got " +
+                     formatNumber(desc.spacing));
+  const double spacing = desc.spacing > 0.0 ? desc.spacing : defaultSpacing;
+  if (!(spacing > 0.0))
+    throw InputError(where + ".spacing: expected a positive number (no fluid spacing to default " +
+                     "to), got " + formatNumber(desc.spacing));
+  if (!(desc.density > 0.0) || !std::isfinite(desc.density))
+    throw InputError(where + ".density: expected a positive number, got " +
+                     formatNumber(desc.density));
+
+  return spacing;
+}
+
+}  // namespace
+
+struct ObjectWorld::Impl {
+  struct Object {
+    std::string name;
+    ObjectMotion motion = ObjectMotion::Rigid;
+    std::size_t first = 0, count = 0;
+    BuiltShape shape;
+    std::size_t body = 0;  // index into rigid, networks or paths, by motion
+    DVec3 initialCentre;   // centre of mass at the start
+  };
+
+  WorldSettings settings;
+  DVec3 gravity;
+  double time = 0.0;
+
+  // Per particle (N each), written by the substeps; published as floats after each step.
+  std::vector<DVec3> position, velocity;
+  std::vector<DVec3> initialPosition, restNormal;  // the pose as sampled
+  std::vector<DVec3> force;                        // scratch, N
+  std::vector<std::uint8_t> movable;               // 0: kinematic or pinned
+  ParticleState published;
+
+  std::vector<Object> objects;
+  std::vector<RigidBody> rigid;
+  std::vector<SpringNetwork> networks;
+  std::vector<KinematicPath> paths;
+
+  // Stability data, fixed at build time.
+  bool contactsPossible = false;
+  double fastestSpringOmega = 0.0;    // rad/s
+  double fastestSpringDamping = 0.0;  // c / m_reduced, 1/s
+  double lightestContactMass = std::numeric_limits<double>::infinity();
+  float minRadius = std::numeric_limits<float>::infinity(), maxRadius = 0.0f;
+  PointGrid contactGrid;
+
+  void addObject(const ObjectDesc& desc, std::size_t index);
+  // Appends the samples as particles; returns their centre.
+  DVec3 appendParticles(const ShapeSamples& samples, const ObjectDesc& desc, std::size_t index,
+                        double particleMass, float radius);
+  void makeDeformable(const ObjectDesc& desc, Object& object, const std::string& where);
+  void placeKinematic(const Object& object);
+  void substep(double h, const std::vector<Vec3>& externalForce);
+  void integrateDeformable(const SpringNetwork& net, double h);
+  void integrateRigid(const Object& object, RigidBody& body, double h);
+  void publish();
+  double stableSubstep() const;
+};
+
+void ObjectWorld::Impl::addObject(const ObjectDesc& desc, std::size_t index) {
+  const std::string where = (settings.sourceName.empty() ? "" : settings.sourceName + ": ") +
+                            "objects[" + std::to_string(index) + "]";
+  const double spacing = checkedSpacing(desc, double(settings.defaultSpacing), where);
+
+  Object object;
+  object.name = desc.name;
+  object.motion = desc.motion;
+  object.first = position.size();
+  const ShapeSamples samples =
+      sampleShape(desc.shape, spacing, where, settings.sceneFolder, object.shape);
+  object.count = samples.position.size();
+
+  // Each particle stands for a cube of edge `spacing`, a surface layer being `spacing` thick.
+  const double particleMass = desc.density * spacing * spacing * spacing;
+  const float radius = float(0.5 * spacing);
+  object.initialCentre = appendParticles(samples, desc, index, particleMass, radius);
+  minRadius = std::min(minRadius, radius);
+  maxRadius = std::max(maxRadius, radius);
+
+  switch (desc.motion) {
+    case ObjectMotion::Rigid: {
+      const std::vector<double> masses(object.count, particleMass);
+      const std::vector<DVec3> points(position.begin() + object.first, position.end());
+      object.body = rigid.size();
+      rigid.emplace_back(points, masses, spacing, toD(desc.velocity), toD(desc.angularVelocity));
+      const RigidBody& body = rigid.back();
+      for (std::size_t k = 0; k < object.count; ++k)
+        velocity[object.first + k] =
+            body.velocity() + cross(body.angularVelocity(), body.localPositions()[k]);
+      break;
+    }
+    case ObjectMotion::Deformable:
+      makeDeformable(desc, object, where);
+      break;
+    case ObjectMotion::Kinematic:
+      validateKeyframes(desc.keyframes, where);
+      object.body = paths.size();
+      paths.emplace_back(desc.keyframes);
+      placeKinematic(object);
+      break;
+  }
+  // What a contact pushes against: a whole rigid body (its mass as felt at its outermost
+  // particle), or one free particle of a deformable.
+  if (desc.motion == ObjectMotion::Rigid)
+    lightestContactMass = std::min(lightestContactMass, rigid[object.body].contactMass());
+  for (std::size_t i = object.first; i < object.first + object.count; ++i)
+    if (movable[i] && desc.motion == ObjectMotion::Deformable)
+      lightestContactMass = std::min(lightestContactMass, particleMass);
+  objects.push_back(std::move(object));
+}
+
+DVec3 ObjectWorld::Impl::appendParticles(const ShapeSamples& samples, const ObjectDesc& desc,
+                                         std::size_t index, double particleMass, float radius) {
+  const bool kinematic = desc.motion == ObjectMotion::Kinematic;
+  DVec3 moment{0, 0, 0};
+  for (std::size_t k = 0; k < samples.position.size(); ++k) {
+    position.push_back(samples.position[k]);
+    initialPosition.push_back(samples.position[k]);
+    restNormal.push_back(samples.normal[k]);
+    velocity.push_back(kinematic ? DVec3{} : toD(desc.velocity));
+    movable.push_back(kinematic ? 0 : 1);
+    published.mass.push_back(float(particleMass));
+    published.radius.push_back(radius);
+    published.object.push_back(std::int32_t(index));
+    published.surface.push_back(samples.surface[k]);
+    published.cut.push_back(0);
+    published.pinned.push_back(0);
+    moment += samples.position[k];
+  }
+  return moment / double(samples.position.size());  // the centre of mass: equal masses
+}
+
+void ObjectWorld::Impl::makeDeformable(const ObjectDesc& desc, Object& object,
+                                       const std::string& where) {
+  const DeformableDesc& d = desc.deformable;
+  requireNonNegative(d.stiffness, where, "deformable.stiffness");
+  requireNonNegative(d.damping, where, "deformable.damping");
+  requireNonNegative(d.breakingStrain, where, "deformable.breaking_strain");
+  if (!(d.springReach > 1.0) || !std::isfinite(d.springReach))
+    throw InputError(where + ".deformable.spring_reach: expected a number > 1 (× spacing), got " +
+                     formatNumber(d.springReach));
+  const double spacing = object.shape.spacing;
+  for (std::size_t i = object.first; i < object.first + object.count; ++i) {
+    for (const AxisBox& box : d.pinned)
+      if (insideBox(box, position[i])) {
+        published.pinned[i] = 1;
+        movable[i] = 0;
+        velocity[i] = {0, 0, 0};
+      }
+  }
+  SpringNetwork net =
+      buildSprings(position, restNormal, object.first, object.count, d.springReach * spacing);
+  // A cut is a slit made beforehand: the springs that pass through a cut box start broken, and
+  // the particles they joined are torn.
+  for (std::size_t s = 0; s < net.springs.size(); ++s) {
+    const Spring& spring = net.springs[s];
+    for (const AxisBox& box : d.cuts) {
+      if (net.broken[s] || !segmentMeetsBox(box, position[spring.a], position[spring.b])) continue;
+      net.broken[s] = 1;
+      ++net.brokenCount;
+      published.cut[spring.a] = published.cut[spring.b] = 1;
+    }
+  }
+  const double particleMass = published.mass[object.first];
+  const double objectMass = particleMass * double(object.count);
+  const double g = norm(gravity) > 0.0 ? norm(gravity) : kStandardGravity;
+  // k · (1 % of the rest spacing) = the object's weight.
+  net.stiffness =
+      d.stiffness > 0.0 ? d.stiffness : objectMass * g / (kDefaultWeightStrain * spacing);
+  // Critical damping of one spring between two particles: c = 2 √(k m_red), m_red = m/2.
+  const double reducedMass = 0.5 * particleMass;
+  net.damping = d.damping > 0.0 ? d.damping : 2.0 * std::sqrt(net.stiffness * reducedMass);
+  net.breakingStrain = d.breakingStrain;
+  if (!net.springs.empty()) {
+    fastestSpringOmega = std::max(fastestSpringOmega, std::sqrt(net.stiffness / reducedMass));
+    fastestSpringDamping = std::max(fastestSpringDamping, net.damping / reducedMass);
+  }
+  object.body = networks.size();
+  networks.push_back(std::move(net));
+}
+
+void ObjectWorld::Impl::placeKinematic(const Object& object) {
+  const KinematicPose pose = paths[object.body].at(time);
+  for (std::size_t i = object.first; i < object.first + object.count; ++i) {
+    const DVec3 arm = pose.rotation * (initialPosition[i] - object.initialCentre);
+    position[i] = object.initialCentre + pose.offset + arm;
+    velocity[i] = pose.velocity + cross(pose.angularVelocity, arm);
+  }
+}
+
+void ObjectWorld::Impl::integrateDeformable(const SpringNetwork& net, double h) {
+  for (std::size_t i = net.first; i < net.first + net.count; ++i) {
+    if (published.pinned[i]) continue;
+    // Symplectic Euler: the new velocity moves the particle.
+    velocity[i] += (force[i] / double(published.mass[i]) + gravity) * h;
+    position[i] += velocity[i] * h;
+  }
+}
+
+void ObjectWorld::Impl::integrateRigid(const Object& object, RigidBody& body, double h) {
+  // Newton–Euler: F = Σ f_i + M g, τ = Σ (x_i − X) × f_i about the centre of mass X.
+  const DVec3 centre = body.centreOfMass();
+  DVec3 total = gravity * body.mass(), torque{0, 0, 0};
+  for (std::size_t i = object.first; i < object.first + object.count; ++i) {
+    total += force[i];
+    torque += cross(position[i] - centre, force[i]);
+  }
+  body.integrate(total, torque, h);
+  const Mat3 r = body.rotation();
+  const DVec3 x = body.centreOfMass(), v = body.velocity(), omega = body.angularVelocity();
+  const std::vector<DVec3>& local = body.localPositions();
+  for (std::size_t k = 0; k < object.count; ++k) {
+    const DVec3 arm = r * local[k];
+    position[object.first + k] = x + arm;
+    velocity[object.first + k] = v + cross(omega, arm);
+  }
+}
+
+void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce) {
+  const std::size_t n = position.size();
+  for (std::size_t i = 0; i < n; ++i)
+    force[i] = externalForce.empty() ? DVec3{} : toD(externalForce[i]);
+  if (contactsPossible) {
+    const ContactParticles particles{position, velocity, published.radius, published.object,
+                                     movable};
+    addContactForces(settings.contact, particles, maxRadius, contactGrid, force);
+  }
+  for (const SpringNetwork& net : networks) addSpringForces(net, position, velocity, force);
+
+  for (SpringNetwork& net : networks) {
+    integrateDeformable(net, h);
+    breakOverstretched(net, position, published.cut);
+  }
+  time += h;
+  for (const Object& object : objects) {
+    if (object.motion == ObjectMotion::Rigid) integrateRigid(object, rigid[object.body], h);
+    if (object.motion == ObjectMotion::Kinematic) placeKinematic(object);
+  }
+}
+
+void ObjectWorld::Impl::publish() {
+  const std::size_t n = position.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    published.position[i] = toF(position[i]);
+    published.velocity[i] = toF(velocity[i]);
+  }
+  for (const Object& object : objects) {
+    Mat3 rotation = Mat3::identity();
+    if (object.motion == ObjectMotion::Deformable) {
+      updateNormals(networks[object.body], position, restNormal, published.pinned,
+                    published.normal);
+      continue;
+    }
+    if (object.motion == ObjectMotion::Rigid) rotation = rigid[object.body].rotation();
+    if (object.motion == ObjectMotion::Kinematic) rotation = paths[object.body].at(time).rotation;
+    for (std::size_t i = object.first; i < object.first + object.count; ++i)
+      published.normal[i] = toF(normalized(rotation * restNormal[i]));
+  }
+}
+
+double ObjectWorld::Impl::stableSubstep() const {
+  double h = std::numeric_limits<double>::infinity();
+  if (fastestSpringOmega > 0.0) {
+    h = std::min(h, kStepPerOmega / fastestSpringOmega);
+    if (fastestSpringDamping > 0.0) h = std::min(h, kStepPerDampingRate / fastestSpringDamping);
+  }
+  if (contactsPossible) {
+    const ContactCoefficients& k = settings.contact;
+    if (k.spring > 0.0f)
+      h = std::min(h, kStepPerOmega / std::sqrt(double(k.spring) / lightestContactMass));
+    const double dampingRate = (double(k.damping) + double(k.shear)) / lightestContactMass;
+    if (dampingRate > 0.0) h = std::min(h, kStepPerDampingRate / dampingRate);
+    double maxSpeed = 0.0;
+    for (const DVec3& v : velocity) maxSpeed = std::max(maxSpeed, norm(v));
+    if (maxSpeed > 0.0) h = std::min(h, kMaxTravelPerRadius * double(minRadius) / maxSpeed);
+  }
+  return h;
+}
+
+ObjectWorld::ObjectWorld(const std::vector<ObjectDesc>& objects, const WorldSettings& settings)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& w = *impl_;
+  w.settings = settings;
+  w.gravity = toD(settings.gravity);
+  for (std::size_t i = 0; i < objects.size(); ++i) w.addObject(objects[i], i);
+  const std::size_t n = w.position.size();
+  w.force.assign(n, DVec3{});
+  w.published.position.resize(n);
+  w.published.velocity.resize(n);
+  w.published.normal.resize(n);
+  const ContactCoefficients& k = settings.contact;
+  const bool anyMovable = std::find(w.movable.begin(), w.movable.end(), 1) != w.movable.end();
+  w.contactsPossible =
+      objects.size() >= 2 && anyMovable && (k.spring > 0.0f || k.damping > 0.0f || k.shear > 0.0f);
+  w.publish();
+}
+
+ObjectWorld::~ObjectWorld() = default;
+ObjectWorld::ObjectWorld(ObjectWorld&&) noexcept = default;
+ObjectWorld& ObjectWorld::operator=(ObjectWorld&&) noexcept = default;
+
+std::size_t ObjectWorld::objectCount() const {
+  return impl_->objects.size();
+}
+
+const ParticleState& ObjectWorld::particles() const {
+  return impl_->published;
+}
+
+double ObjectWorld::time() const {
+  return impl_->time;
+}
+
+ObjectInfo ObjectWorld::info(std::size_t object) const {
+  const Impl& w = *impl_;
+  const Impl::Object& o = w.objects.at(object);
+  ObjectInfo info;
+  info.name = o.name;
+  info.motion = o.motion;
+  info.firstParticle = o.first;
+  info.particleCount = o.count;
+  DVec3 moment{0, 0, 0}, momentum{0, 0, 0};
+  for (std::size_t i = o.first; i < o.first + o.count; ++i) {
+    const double m = w.published.mass[i];
+    info.mass += m;
+    moment += w.position[i] * m;
+    momentum += w.velocity[i] * m;
+  }
+  info.centreOfMass = toF(moment / info.mass);
+  info.velocity = toF(momentum / info.mass);
+  if (o.motion == ObjectMotion::Rigid) {
+    info.centreOfMass = toF(w.rigid[o.body].centreOfMass());
+    info.velocity = toF(w.rigid[o.body].velocity());
+  }
+  if (o.motion == ObjectMotion::Deformable) {
+    info.springs = w.networks[o.body].springs.size();
+    info.brokenSprings = w.networks[o.body].brokenCount;
+  }
+  return info;
+}
+
+void ObjectWorld::step(double dt, const std::vector<Vec3>& externalForce) {
+  Impl& w = *impl_;
+  if (!externalForce.empty() && externalForce.size() != w.position.size())
+    throw std::invalid_argument("ObjectWorld::step: externalForce has " +
+                                std::to_string(externalForce.size()) + " entries for " +
+                                std::to_string(w.position.size()) + " particles");
+  if (!(dt > 0.0)) return;
+  const double stable = w.stableSubstep();
+  double count = 1.0;
+  if (stable > 0.0 && std::isfinite(stable)) count = std::min(std::ceil(dt / stable), kMaxSubsteps);
+  const std::size_t substeps = std::size_t(std::max(count, 1.0));
+  const double start = w.time, h = dt / double(substeps);
+  for (std::size_t s = 0; s < substeps; ++s) w.substep(h, externalForce);
+  w.time = start + dt;  // no drift from summing h
+  for (const Impl::Object& object : w.objects)
+    if (object.motion == ObjectMotion::Kinematic) w.placeKinematic(object);
+  w.publish();
+}
+
+double ObjectWorld::stableSubstep() const {
+  return impl_->stableSubstep();
+}
+
+bool ObjectWorld::interiorContains(std::size_t object, Vec3 p, float margin) const {
+  return impl_->objects.at(object).shape.interiorContains(toD(p), margin);
+}
+
+bool ObjectWorld::enclosesVolume(std::size_t object) const {
+  return impl_->objects.at(object).shape.enclosesVolume;
+}
+
+}  // namespace sph::objects

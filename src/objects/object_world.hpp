@@ -1,0 +1,90 @@
+// The built-in engine for particle-based objects (DESIGN.md layer 5, seed 1 §4.3): rigid bodies
+// (Newton–Euler), deformables (particles joined by springs that can break), pinned particles
+// and kinematic actuators that follow keyframes. Runs on the host; the fluid sees only the
+// surface particles it publishes and returns forces on them (interaction/exchange).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sph/core/contact.hpp"
+#include "sph/core/vec.hpp"
+#include "sph/scene.hpp"
+
+namespace sph::objects {
+
+struct WorldSettings {
+  Vec3 gravity{0.0f, 0.0f, 0.0f};
+  float defaultSpacing = 0.0f;  // for objects whose spacing is 0 (the fluid's spacing)
+  // Object–object contact between particles of different objects (DEM, core/contact.hpp).
+  ContactCoefficients contact{0.0f, 0.0f, 0.0f};
+  std::string sceneFolder;  // mesh files are resolved against it
+  std::string sourceName;   // the scene file, for error messages
+};
+
+// Every particle of every object, by particle index (stable: the index is the particle's
+// handle in the exchange). Objects occupy consecutive ranges.
+struct ParticleState {
+  std::vector<Vec3> position;  // m
+  std::vector<Vec3> velocity;  // m/s
+  std::vector<Vec3> normal;    // outward unit normal of the object's surface at the particle
+  std::vector<float> mass;     // kg
+  std::vector<float> radius;   // half the object's spacing, m
+  std::vector<std::int32_t> object;
+  std::vector<std::uint8_t> surface;  // 1: on the object's surface, published to the fluid
+  std::vector<std::uint8_t> cut;      // 1: a spring at this particle has broken
+  std::vector<std::uint8_t> pinned;   // 1: fixed in place (deformables)
+  std::size_t size() const { return position.size(); }
+};
+
+struct ObjectInfo {
+  std::string name;
+  ObjectMotion motion = ObjectMotion::Rigid;
+  std::size_t firstParticle = 0;
+  std::size_t particleCount = 0;
+  double mass = 0.0;              // kg (kinematic: of its particles, for reports)
+  Vec3 centreOfMass{0, 0, 0};     // m
+  Vec3 velocity{0, 0, 0};         // of the centre of mass, m/s
+  std::size_t springs = 0;        // deformables
+  std::size_t brokenSprings = 0;  // deformables, including those cut at the start
+};
+
+class ObjectWorld {
+ public:
+  // Samples every object. Throws InputError naming settings.sourceName and the key
+  // ("objects[2].shape.radius: ...") when an object cannot be built.
+  ObjectWorld(const std::vector<ObjectDesc>& objects, const WorldSettings& settings);
+  ~ObjectWorld();
+  ObjectWorld(ObjectWorld&&) noexcept;
+  ObjectWorld& operator=(ObjectWorld&&) noexcept;
+
+  std::size_t objectCount() const;
+  const ParticleState& particles() const;
+  ObjectInfo info(std::size_t object) const;
+  double time() const;
+
+  // Advances by dt. `externalForce` holds, per particle index, a force (N) acting throughout
+  // the step (the fluid's contact forces); empty means none. Substeps internally as the
+  // springs, masses and contacts require (`stableSubstep`); kinematic objects follow their
+  // keyframes; pinned particles stay.
+  void step(double dt, const std::vector<Vec3>& externalForce);
+
+  // The largest internal step the explicit integration is stable with, for the stiffest
+  // spring or contact on the lightest particle.
+  double stableSubstep() const;
+
+  // Whether p lies in the interior of object `object` as built (its initial shape: box,
+  // sphere, capsule, capped tube, closed mesh), at least `margin` inside its particles.
+  // False for shapes that enclose nothing (an open tube, a solid body's own volume counts).
+  bool interiorContains(std::size_t object, Vec3 p, float margin) const;
+  bool enclosesVolume(std::size_t object) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sph::objects

@@ -1,0 +1,44 @@
+// Sampling an object's shape into particles (positions, outward normals, surface flags) and the
+// interior test on the shape as built.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "objects/math3d.hpp"
+#include "objects/mesh.hpp"
+#include "objects/point_grid.hpp"
+#include "sph/scene.hpp"
+
+namespace sph::objects {
+
+struct ShapeSamples {
+  std::vector<DVec3> position;  // m, world frame at the initial pose
+  std::vector<DVec3> normal;    // outward unit normal of the nearest surface
+  std::vector<std::uint8_t> surface;
+};
+
+// What interiorContains needs of the initial shape.
+struct BuiltShape {
+  ShapeDesc desc;
+  double spacing = 0.0;
+  bool enclosesVolume = false;
+  TriangleMesh mesh;       // meshes: scaled and placed
+  PointGrid particleGrid;  // meshes: the sampled particles, for the margin test
+  std::vector<DVec3> particles;
+
+  // Whether p lies inside the cavity, at least `margin` inside the innermost particle layer.
+  bool interiorContains(DVec3 p, double margin) const;
+};
+
+// Samples `shape` at `spacing` (> 0). `where` prefixes error messages ("scene.json:
+// objects[2]"); `sceneFolder` resolves relative mesh files. Throws InputError on impossible
+// geometry; fills `built` for later interior tests.
+ShapeSamples sampleShape(const ShapeDesc& shape, double spacing, const std::string& where,
+                         const std::string& sceneFolder, BuiltShape& built);
+
+// "0.25", "-1" — how numbers read in error messages.
+std::string formatNumber(double value);
+
+}  // namespace sph::objects

@@ -1,0 +1,70 @@
+// Object descriptions shared by the object engine tests.
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "objects/object_world.hpp"
+
+namespace sph::objects::test {
+
+inline ObjectDesc box(Vec3d center, Vec3d halfExtents, double spacing,
+                      ObjectMotion motion = ObjectMotion::Rigid) {
+  ObjectDesc d;
+  d.name = "box";
+  d.motion = motion;
+  d.shape.kind = ShapeKind::Box;
+  d.shape.center = center;
+  d.shape.halfExtents = halfExtents;
+  d.spacing = spacing;
+  return d;
+}
+
+inline ObjectDesc sphere(Vec3d center, double radius, double spacing,
+                         ObjectMotion motion = ObjectMotion::Rigid) {
+  ObjectDesc d;
+  d.name = "sphere";
+  d.motion = motion;
+  d.shape.kind = ShapeKind::Sphere;
+  d.shape.center = center;
+  d.shape.radius = radius;
+  d.spacing = spacing;
+  return d;
+}
+
+inline ObjectDesc tube(Vec3d center, double radius, double length, double spacing,
+                       ObjectMotion motion = ObjectMotion::Deformable) {
+  ObjectDesc d;
+  d.name = "tube";
+  d.motion = motion;
+  d.shape.kind = ShapeKind::Tube;
+  d.shape.center = center;
+  d.shape.radius = radius;
+  d.shape.length = length;
+  d.shape.axis = {1, 0, 0};
+  d.spacing = spacing;
+  return d;
+}
+
+inline WorldSettings settings(Vec3 gravity = {0, 0, 0}) {
+  WorldSettings s;
+  s.gravity = gravity;
+  s.defaultSpacing = 0.01f;
+  s.sourceName = "scene.json";
+  return s;
+}
+
+inline double distance(Vec3 a, Vec3 b) {
+  return length(a - b);
+}
+
+// Distance from particle i to its nearest neighbour among the particles [first, end).
+inline double nearestNeighbour(const std::vector<Vec3>& p, std::size_t i) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < p.size(); ++j)
+    if (j != i) best = std::min(best, distance(p[i], p[j]));
+  return best;
+}
+
+}  // namespace sph::objects::test
