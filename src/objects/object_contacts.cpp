@@ -28,4 +28,23 @@ std::size_t addContactForces(const ContactCoefficients& coefficients, const Cont
   return touching;
 }
 
+std::size_t addStaticContactForces(const ContactCoefficients& coefficients,
+                                   const ContactParticles& p, const std::vector<DVec3>& statics,
+                                   float staticRadius, const PointGrid& staticGrid,
+                                   std::vector<DVec3>& force) {
+  std::size_t touching = 0;
+  for (std::size_t i = 0; i < p.position.size(); ++i) {
+    if (!p.movable[i]) continue;
+    const float reach = p.radius[i] + staticRadius;
+    staticGrid.forEachCandidate(p.position[i], reach, [&](std::uint32_t j) {
+      const Vec3 offset = toF(p.position[i] - statics[j]);
+      if (lengthSquared(offset) >= reach * reach) return;
+      force[i] += toD(demContactForce(coefficients, offset, toF(-p.velocity[i]), reach,
+                                      /*springScale=*/1.0f, /*damped=*/true));
+      ++touching;
+    });
+  }
+  return touching;
+}
+
 }  // namespace sph::objects

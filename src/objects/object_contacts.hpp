@@ -25,4 +25,11 @@ struct ContactParticles {
 std::size_t addContactForces(const ContactCoefficients& coefficients, const ContactParticles& p,
                              float maxRadius, PointGrid& grid, std::vector<DVec3>& force);
 
+// Adds to `force` the contact force of the static particles (in `staticGrid`, all of radius
+// `staticRadius`) on every movable particle touching one. Returns the number of touching pairs.
+std::size_t addStaticContactForces(const ContactCoefficients& coefficients,
+                                   const ContactParticles& p, const std::vector<DVec3>& statics,
+                                   float staticRadius, const PointGrid& staticGrid,
+                                   std::vector<DVec3>& force);
+
 }  // namespace sph::objects

@@ -113,8 +113,11 @@ struct ObjectWorld::Impl {
   double lightestContactMass = std::numeric_limits<double>::infinity();
   float minRadius = std::numeric_limits<float>::infinity(), maxRadius = 0.0f;
   PointGrid contactGrid;
+  std::vector<DVec3> statics;  // settings.staticParticles
+  PointGrid staticGrid;
 
   void addObject(const ObjectDesc& desc, std::size_t index);
+  ShapeDesc wettedShape(const ObjectDesc& desc, double spacing) const;
   // Appends the samples as particles; returns their centre.
   DVec3 appendParticles(const ShapeSamples& samples, const ObjectDesc& desc, std::size_t index,
                         double particleMass, float radius);
@@ -127,6 +130,28 @@ struct ObjectWorld::Impl {
   double stableSubstep() const;
 };
 
+// The shape whose surface layer the fluid meets on the described faces (see
+// WorldSettings::wettedOffsetRatio); the described shape where that does not apply or would
+// leave less than a spacing.
+ShapeDesc ObjectWorld::Impl::wettedShape(const ObjectDesc& desc, double spacing) const {
+  ShapeDesc shape = desc.shape;
+  const double inset = double(settings.wettedOffsetRatio) * 0.5 * spacing;
+  if (desc.motion == ObjectMotion::Deformable || shape.solid || !(inset > 0.0)) return shape;
+  switch (shape.kind) {
+    case ShapeKind::Box:
+      if (*std::min_element(shape.halfExtents.begin(), shape.halfExtents.end()) - inset > spacing)
+        for (double& e : shape.halfExtents) e -= inset;
+      break;
+    case ShapeKind::Sphere:
+    case ShapeKind::Capsule:
+      if (shape.radius - inset > spacing) shape.radius -= inset;
+      break;
+    default:
+      break;
+  }
+  return shape;
+}
+
 void ObjectWorld::Impl::addObject(const ObjectDesc& desc, std::size_t index) {
   const std::string where = (settings.sourceName.empty() ? "" : settings.sourceName + ": ") +
                             "objects[" + std::to_string(index) + "]";
@@ -137,7 +162,7 @@ void ObjectWorld::Impl::addObject(const ObjectDesc& desc, std::size_t index) {
   object.motion = desc.motion;
   object.first = position.size();
   const ShapeSamples samples =
-      sampleShape(desc.shape, spacing, where, settings.sceneFolder, object.shape);
+      sampleShape(wettedShape(desc, spacing), spacing, where, settings.sceneFolder, object.shape);
   object.count = samples.position.size();
 
   // Each particle stands for a cube of edge `spacing`, a surface layer being `spacing` thick.
@@ -294,6 +319,9 @@ void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce
     const ContactParticles particles{position, velocity, published.radius, published.object,
                                      movable};
     addContactForces(settings.contact, particles, maxRadius, contactGrid, force);
+    if (!statics.empty())
+      addStaticContactForces(settings.contact, particles, statics, settings.staticRadius,
+                             staticGrid, force);
   }
   for (const SpringNetwork& net : networks) addSpringForces(net, position, velocity, force);
 
@@ -360,8 +388,10 @@ ObjectWorld::ObjectWorld(const std::vector<ObjectDesc>& objects, const WorldSett
   w.published.normal.resize(n);
   const ContactCoefficients& k = settings.contact;
   const bool anyMovable = std::find(w.movable.begin(), w.movable.end(), 1) != w.movable.end();
-  w.contactsPossible =
-      objects.size() >= 2 && anyMovable && (k.spring > 0.0f || k.damping > 0.0f || k.shear > 0.0f);
+  for (const Vec3& x : settings.staticParticles) w.statics.push_back(toD(x));
+  if (!w.statics.empty()) w.staticGrid.build(w.statics, 2.0 * double(settings.staticRadius));
+  w.contactsPossible = (objects.size() >= 2 || !w.statics.empty()) && anyMovable &&
+                       (k.spring > 0.0f || k.damping > 0.0f || k.shear > 0.0f);
   w.publish();
 }
 

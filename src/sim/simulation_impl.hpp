@@ -59,21 +59,24 @@ struct Simulation::Impl {
     calibration = sim::calibrate(scene);
     params = sim::fluidParameters(scene, calibration);
     dt = calibration.initialDt;
-    std::optional<objects::ObjectWorld> world;
-    if (!scene.objects.empty()) {
-      world.emplace(scene.objects, sim::worldSettings(scene, calibration));
-      interactionParams = sim::interactionParameters(scene, calibration);
-      checkContactReach(*world);
-    }
-
     sim::EngineSetup setup;
-    setup.params = params;
-    setup.domain = sim::domainParameters(scene);
-    sampleFluid(setup, world ? &*world : nullptr);
     for (const auto& tank : scene.walls) {
       const auto points = sim::sampleTank(tank, scene.fluid.spacing, scene.gravity);
       setup.walls.insert(setup.walls.end(), points.begin(), points.end());
     }
+    std::optional<objects::ObjectWorld> world;
+    if (!scene.objects.empty()) {
+      objects::WorldSettings settings = sim::worldSettings(scene, calibration);
+      settings.staticParticles = setup.walls;  // objects rest on the walls that hold the fluid
+      settings.staticRadius = static_cast<float>(0.5 * scene.fluid.spacing);
+      world.emplace(scene.objects, settings);
+      interactionParams = sim::interactionParameters(scene, calibration);
+      checkContactReach(*world);
+    }
+
+    setup.params = params;
+    setup.domain = sim::domainParameters(scene);
+    sampleFluid(setup, world ? &*world : nullptr);
     // Twice the neighbours of a particle in the initial lattice leaves room for compression.
     const double ratio = scene.fluid.supportRatio;
     setup.neighborStride =
