@@ -117,7 +117,6 @@ struct ObjectWorld::Impl {
   PointGrid staticGrid;
 
   void addObject(const ObjectDesc& desc, std::size_t index);
-  ShapeDesc wettedShape(const ObjectDesc& desc, double spacing) const;
   // Appends the samples as particles; returns their centre.
   DVec3 appendParticles(const ShapeSamples& samples, const ObjectDesc& desc, std::size_t index,
                         double particleMass, float radius);
@@ -130,26 +129,30 @@ struct ObjectWorld::Impl {
   double stableSubstep() const;
 };
 
-// The shape whose surface layer the fluid meets on the described faces (see
-// WorldSettings::wettedOffsetRatio); the described shape where that does not apply or would
-// leave less than a spacing.
-ShapeDesc ObjectWorld::Impl::wettedShape(const ObjectDesc& desc, double spacing) const {
-  ShapeDesc shape = desc.shape;
-  const double inset = double(settings.wettedOffsetRatio) * 0.5 * spacing;
-  if (desc.motion == ObjectMotion::Deformable || shape.solid || !(inset > 0.0)) return shape;
+// The volume the described shape encloses, m³.
+double enclosedVolume(const ShapeDesc& shape, const BuiltShape& built) {
+  const double pi = 3.14159265358979323846;
+  const double r = shape.radius;
   switch (shape.kind) {
     case ShapeKind::Box:
-      if (*std::min_element(shape.halfExtents.begin(), shape.halfExtents.end()) - inset > spacing)
-        for (double& e : shape.halfExtents) e -= inset;
-      break;
+      return 8.0 * shape.halfExtents[0] * shape.halfExtents[1] * shape.halfExtents[2];
     case ShapeKind::Sphere:
+      return 4.0 / 3.0 * pi * r * r * r;
     case ShapeKind::Capsule:
-      if (shape.radius - inset > spacing) shape.radius -= inset;
-      break;
-    default:
-      break;
+      return pi * r * r * shape.length + 4.0 / 3.0 * pi * r * r * r;
+    case ShapeKind::Tube:
+      return pi * r * r * shape.length;
+    case ShapeKind::Mesh: {
+      double volume = 0.0;  // the divergence theorem over the triangles
+      for (const auto& t : built.mesh.triangles) {
+        const DVec3 a = toD(built.mesh.vertices[t[0]]), b = toD(built.mesh.vertices[t[1]]),
+                    c = toD(built.mesh.vertices[t[2]]);
+        volume += dot(a, cross(b, c)) / 6.0;
+      }
+      return std::abs(volume);
+    }
   }
-  return shape;
+  return 0.0;
 }
 
 void ObjectWorld::Impl::addObject(const ObjectDesc& desc, std::size_t index) {
@@ -162,11 +165,15 @@ void ObjectWorld::Impl::addObject(const ObjectDesc& desc, std::size_t index) {
   object.motion = desc.motion;
   object.first = position.size();
   const ShapeSamples samples =
-      sampleShape(wettedShape(desc, spacing), spacing, where, settings.sceneFolder, object.shape);
+      sampleShape(desc.shape, spacing, where, settings.sceneFolder, object.shape);
   object.count = samples.position.size();
 
-  // Each particle stands for a cube of edge `spacing`, a surface layer being `spacing` thick.
-  const double particleMass = desc.density * spacing * spacing * spacing;
+  // Each particle stands for a cube of edge `spacing`, a surface layer being `spacing` thick;
+  // but a rigid body sampled on its surface is a solid body: its particles share the mass of
+  // its whole volume (the inertia is then that of a shell, up to 5/3 of the solid's).
+  double particleMass = desc.density * spacing * spacing * spacing;
+  if (desc.motion == ObjectMotion::Rigid && object.shape.enclosesVolume && object.count > 0)
+    particleMass = desc.density * enclosedVolume(desc.shape, object.shape) / double(object.count);
   const float radius = float(0.5 * spacing);
   object.initialCentre = appendParticles(samples, desc, index, particleMass, radius);
   minRadius = std::min(minRadius, radius);

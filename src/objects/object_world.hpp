@@ -21,11 +21,6 @@ struct WorldSettings {
   float defaultSpacing = 0.0f;  // for objects whose spacing is 0 (the fluid's spacing)
   // Object–object contact between particles of different objects (DEM, core/contact.hpp).
   ContactCoefficients contact{0.0f, 0.0f, 0.0f};
-  // The fluid keeps its particles this many particle radii outside an object's particle layer
-  // (the influence sphere). Rigid and kinematic boxes, spheres and capsules sampled on their
-  // surface place that layer this far inside their faces, so that the body the fluid meets,
-  // and the volume it displaces, is the one the scene describes.
-  float wettedOffsetRatio = 0.0f;
   // Static geometry the objects collide with (the fluid's walls): fixed particles of this
   // radius that push movable particles by the same contact law and never move.
   std::vector<Vec3> staticParticles;

@@ -112,7 +112,6 @@ objects::WorldSettings worldSettings(const Scene& scene, const Calibration& c) {
   const double spring = c.contactStiffness * std::exp(scene.interaction.distanceExponent);
   w.contact = ContactCoefficients{static_cast<float>(spring),
                                   static_cast<float>(std::sqrt(spring * c.mass)), 0.0f};
-  w.wettedOffsetRatio = static_cast<float>(scene.interaction.influenceRatio);
   w.sourceName = scene.sourcePath;
   w.sceneFolder = std::filesystem::path(scene.sourcePath).parent_path().string();
   return w;

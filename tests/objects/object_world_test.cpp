@@ -121,7 +121,7 @@ TEST(ObjectWorld, RigidSphereComesToRestOnAFloor) {
   const ParticleState& p = world.particles();
   const ObjectInfo ballInfo = world.info(1);
   double lowestGap = 1.0;
-  for (int step = 0; step < 2000; ++step) {
+  for (int step = 0; step < 3000; ++step) {
     world.step(1e-3, {});
     for (std::size_t i = ballInfo.firstParticle; i < p.size(); ++i)
       lowestGap = std::min(lowestGap, double(p.position[i].y) - (-0.03));

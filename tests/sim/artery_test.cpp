@@ -72,6 +72,25 @@ TEST_P(ArterySqueeze, BloodMovesToTheFreeEndAndNoneLeaks) {
 
 SPH_ON_EVERY_BACKEND(ArterySqueeze);
 
+// The exchange (seed 1 figure 1): the object engine at twice and at half the fluid's rate, in
+// its own thread; the squeeze stays stable and leak-free.
+class ArteryEngineRate : public ::testing::TestWithParam<double> {};
+
+TEST_P(ArteryEngineRate, StableAndLeakFree) {
+  Scene scene = io::loadScene(scenePath("artery_squeeze.json"));
+  scene.objectEngine.rate = GetParam();
+  ASSERT_TRUE(scene.objectEngine.ownThread);
+  Simulation sim(scene);
+  const SqueezeResult r = squeeze(sim, 0.35);  // throws SimulationFailure if unstable
+  EXPECT_EQ(r.maxLeaked, 0u);
+  EXPECT_EQ(sim.removedCount(), 0u);
+  EXPECT_GT(r.centreAfter - r.centreBefore, 0.0005);
+  EXPECT_LT(sim.stats().maxDensityError, 0.1);  // compression; runs fail at 0.5
+}
+
+INSTANTIATE_TEST_SUITE_P(TwiceAndHalf, ArteryEngineRate, ::testing::Values(2.0, 0.5),
+                         [](const auto& info) { return info.param > 1.0 ? "twice" : "half"; });
+
 // Distance from p to the box, 0 inside it.
 double distanceToBox(const AxisBox& box, const float* p) {
   double d2 = 0.0;
