@@ -131,10 +131,15 @@ int runCommand(const RunOptions& options) {
         output.framesWritten(), static_cast<unsigned long long>(last.fluidCount),
         static_cast<unsigned long long>(last.removedCount),
         static_cast<unsigned long long>(last.leakedCount));
-    std::printf(
-        "open %s/frames.pvd (and the walls, %s/boundary.vtp) in ParaView; statistics "
-        "in %s/stats.csv\n",
-        output.dir().c_str(), output.dir().c_str(), output.dir().c_str());
+    if (last.boundaryCount > 0) {
+      std::printf(
+          "open %s/frames.pvd (and the walls, %s/boundary.vtp) in ParaView; statistics "
+          "in %s/stats.csv\n",
+          output.dir().c_str(), output.dir().c_str(), output.dir().c_str());
+    } else {
+      std::printf("open %s/frames.pvd in ParaView; statistics in %s/stats.csv\n",
+                  output.dir().c_str(), output.dir().c_str());
+    }
   }
   return kExitOk;
 }
