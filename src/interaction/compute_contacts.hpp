@@ -84,9 +84,9 @@ std::size_t computeContacts(fluid::FluidParticles<B>& fluid, const fluid::Grid<B
         const Vec4 ai = acceleration[i];
         Vec3 force{0.0f, 0.0f, 0.0f};
         const std::int32_t container = containerById ? containerById[id[i]] : -1;
-        // The side of the container's wall the particle is on: the signed distances along the
-        // outward normals of the container's particles around it, weighted toward the nearest,
-        // so that one particle with a poor normal (a fold, a pinch) cannot decide alone.
+        // Which side of its container's wall the particle is on: the mean signed distance
+        // along the outward normals of the container's intact particles in reach, weighted
+        // toward the nearest.
         const float reach2 = objectGrid.cellSize * objectGrid.cellSize;
         float sideSum = 0.0f, weightSum = 0.0f;
         int sideCount = 0;
@@ -111,15 +111,13 @@ std::size_t computeContacts(fluid::FluidParticles<B>& fluid, const fluid::Grid<B
         }
         const Vec3 a = detail::clampLength(xyz(ai) + force * inverseMass, p.maxAcceleration);
         acceleration[i] = makeVec4(a, ai.w);
-        // Inside or outside: which side of the wall's particle layer it is on, by the mean
-        // signed distance along the wall's normals. A particle squeezing through a wall passes
-        // within reach of several of its particles, and gets past the layer by more than half
-        // its radius; "outside" asks for both, which a particle pressed against the tip of a
-        // crease in a crumpled wall (one or two wall particles in reach, their normals poorly
-        // defined) does not meet. Far from the wall the last answer stands: nothing crosses a
-        // wall without passing near it.
-        // Past the box around the container's particles it is out, however it got there (a
-        // tear whose torn particles say nothing of sides).
+        // A particle squeezing through a wall passes within reach of several of its particles
+        // and gets past their layer by more than half its radius: "outside" asks for both,
+        // which a particle pressed against the tip of a crease in a crumpled wall (one or two
+        // wall particles in reach, their normals poorly defined) does not meet. Past the box
+        // around the container's intact particles it is out however it got there (through a
+        // tear, whose torn particles say nothing of sides). Elsewhere the last answer stands:
+        // nothing crosses a wall without passing near it.
         const bool beyond = container >= 0 && !detail::insideBox(objectBounds, container, xi);
         if (weightSum > 0.0f || beyond) {
           const float side = weightSum > 0.0f ? sideSum / weightSum : 0.0f;
