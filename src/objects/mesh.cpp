@@ -350,4 +350,17 @@ bool meshContains(const TriangleMesh& mesh, Vec3 p) {
   return std::abs(total / kFourPi) > 0.5;
 }
 
+double signedVolume(const TriangleMesh& mesh) {
+  double volume = 0.0;
+  for (const auto& t : mesh.triangles) {
+    const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
+    // a · (b × c) / 6 per triangle, in double: a tetrahedron with the origin.
+    const double bc[3] = {double(b.y) * c.z - double(b.z) * c.y,
+                          double(b.z) * c.x - double(b.x) * c.z,
+                          double(b.x) * c.y - double(b.y) * c.x};
+    volume += (a.x * bc[0] + a.y * bc[1] + a.z * bc[2]) / 6.0;
+  }
+  return volume;
+}
+
 }  // namespace sph::objects

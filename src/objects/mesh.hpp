@@ -20,6 +20,10 @@ struct TriangleMesh {
 // Throws InputError naming the file, and the line for text formats, on anything it cannot use.
 TriangleMesh loadMesh(const std::filesystem::path& file);
 
+// The volume a closed mesh encloses by the divergence theorem, positive when its triangles
+// wind outward (right hand).
+double signedVolume(const TriangleMesh& mesh);
+
 // Whether the mesh is closed: every edge is shared by exactly two triangles.
 bool isClosed(const TriangleMesh& mesh);
 

@@ -12,6 +12,7 @@
 #include "objects/rigid_body.hpp"
 #include "objects/shape_sampling.hpp"
 #include "objects/springs.hpp"
+#include "sph/core/time_step.hpp"
 #include "sph/error.hpp"
 
 namespace sph::objects {
@@ -142,15 +143,8 @@ double enclosedVolume(const ShapeDesc& shape, const BuiltShape& built) {
       return pi * r * r * shape.length + 4.0 / 3.0 * pi * r * r * r;
     case ShapeKind::Tube:
       return pi * r * r * shape.length;
-    case ShapeKind::Mesh: {
-      double volume = 0.0;  // the divergence theorem over the triangles
-      for (const auto& t : built.mesh.triangles) {
-        const DVec3 a = toD(built.mesh.vertices[t[0]]), b = toD(built.mesh.vertices[t[1]]),
-                    c = toD(built.mesh.vertices[t[2]]);
-        volume += dot(a, cross(b, c)) / 6.0;
-      }
-      return std::abs(volume);
-    }
+    case ShapeKind::Mesh:
+      return std::abs(signedVolume(built.mesh));
   }
   return 0.0;
 }
@@ -377,7 +371,7 @@ double ObjectWorld::Impl::stableSubstep() const {
     if (dampingRate > 0.0) h = std::min(h, kStepPerDampingRate / dampingRate);
     double maxSpeed = 0.0;
     for (const DVec3& v : velocity) maxSpeed = std::max(maxSpeed, norm(v));
-    if (maxSpeed > 0.0) h = std::min(h, kMaxTravelPerRadius * double(minRadius) / maxSpeed);
+    h = std::min(h, travelTimeStep(kMaxTravelPerRadius * double(minRadius), maxSpeed));
   }
   return h;
 }

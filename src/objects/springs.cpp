@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "objects/point_grid.hpp"
+#include "sph/core/contact.hpp"
 
 namespace sph::objects {
 
@@ -103,8 +104,8 @@ void addSpringForces(const SpringNetwork& net, const std::vector<DVec3>& positio
     const double l = norm(d);
     if (l <= 0.0) continue;
     const DVec3 u = d / l;
-    const double magnitude = net.stiffness * (l - spring.restLength) +
-                             net.damping * dot(velocity[spring.b] - velocity[spring.a], u);
+    const double magnitude = springTension(net.stiffness, net.damping, l, spring.restLength,
+                                           dot(velocity[spring.b] - velocity[spring.a], u));
     force[spring.a] += u * magnitude;
     force[spring.b] -= u * magnitude;
   }

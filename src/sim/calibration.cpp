@@ -82,11 +82,6 @@ void calibrateContact(const Scene& scene, Calibration& out) {
 
 }  // namespace
 
-double contactTimeStep(const Calibration& c, double distanceExponent) {
-  if (c.contactStiffness <= 0.0) return HUGE_VAL;
-  return std::sqrt(c.mass / (c.contactStiffness * std::exp(distanceExponent)));
-}
-
 interaction::InteractionParameters interactionParameters(const Scene& scene, const Calibration& c) {
   const InteractionDesc& i = scene.interaction;
   interaction::InteractionParameters p;

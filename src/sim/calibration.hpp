@@ -19,10 +19,6 @@ interaction::InteractionParameters interactionParameters(const Scene& scene,
                                                          const Calibration& calibration);
 objects::WorldSettings worldSettings(const Scene& scene, const Calibration& calibration);
 
-// The contact time step (seed 1 §8.3): the stiffest fluid–object contact, at the centre of the
-// influence sphere, must not oscillate faster than one radian per step.
-double contactTimeStep(const Calibration& calibration, double distanceExponent);
-
 // Σ_j W(x_i - x_j) over an infinite cubic lattice of the given spacing, self included.
 double latticeKernelSum(KernelKind kernel, double supportRadius, double spacing);
 

@@ -209,9 +209,10 @@ struct Simulation::Impl {
   // Seed 1 §8.3: contacts stay resolved, and no object particle moves more than a quarter of
   // the fluid's radius in a step, so nothing tunnels.
   double objectTimeStep() const {
-    const double contact = sim::contactTimeStep(calibration, scene.interaction.distanceExponent);
-    const double travel =
-        objectMaxSpeed > 0.0f ? 0.25 * interactionParams.fluidRadius / objectMaxSpeed : HUGE_VAL;
+    // The stiffest contact is at the centre of the influence sphere, where φ = e^β.
+    const double contact = springTimeStep(calibration.mass, calibration.contactStiffness,
+                                          std::exp(scene.interaction.distanceExponent));
+    const double travel = travelTimeStep(0.25 * interactionParams.fluidRadius, objectMaxSpeed);
     return std::min(contact, travel);
   }
 

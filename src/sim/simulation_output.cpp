@@ -98,16 +98,6 @@ std::vector<ObjectStats> Simulation::objectStats() const {
   return out;
 }
 
-std::uint64_t Simulation::leakedCount() const {
-  const Impl& s = *impl_;
-  if (!s.objects) return 0;
-  const sim::HostContainment c = s.engine->downloadContainment();
-  std::uint64_t leaked = 0;
-  for (std::size_t k = 0; k < c.containerById.size(); ++k)
-    leaked += (c.containerById[k] >= 0 && c.insideById[k] == 0) ? 1 : 0;
-  return leaked;
-}
-
 std::vector<std::uint32_t> Simulation::leakedIds() const {
   const Impl& s = *impl_;
   std::vector<std::uint32_t> out;
@@ -116,6 +106,10 @@ std::vector<std::uint32_t> Simulation::leakedIds() const {
   for (std::size_t k = 0; k < c.containerById.size(); ++k)
     if (c.containerById[k] >= 0 && c.insideById[k] == 0) out.push_back(std::uint32_t(k));
   return out;
+}
+
+std::uint64_t Simulation::leakedCount() const {
+  return leakedIds().size();
 }
 
 std::vector<float> Simulation::leakPositions() const {

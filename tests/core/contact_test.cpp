@@ -57,6 +57,14 @@ TEST(DemContact, ThePairForcesAreExactNegations) {
   EXPECT_EQ(onA.z + onB.z, 0.0f);
 }
 
+TEST(SpringTension, HookePlusDashpotAlongTheSpring) {
+  // Stretched 2 mm at 50 N/m and opening at 0.1 m/s against 0.3 N·s/m: 0.1 + 0.03 N.
+  EXPECT_NEAR(springTension(50.0, 0.3, 0.012, 0.010, 0.1), 0.13, 1e-12);
+  // Compressed and closing: it pushes the ends apart.
+  EXPECT_NEAR(springTension(50.0, 0.3, 0.009, 0.010, -0.1), -0.08, 1e-12);
+  EXPECT_EQ(springTension(50.0f, 0.0f, 0.01f, 0.01f, 0.0f), 0.0f);
+}
+
 TEST(DistanceFunction, TableFollowsTheExponentialAndRisesInward) {
   for (double beta : {0.0, 2.0, 4.0, 6.0}) {
     const DistanceFunctionTable table = DistanceFunctionTable::make(beta);

@@ -120,15 +120,6 @@ Vec3 unitNormal(const TriangleMesh& mesh, std::size_t t) {
   return n / length(n);
 }
 
-// Positive for outward winding; checks that loading kept the orientation.
-double signedVolume(const TriangleMesh& mesh) {
-  double volume = 0.0;
-  for (const auto& t : mesh.triangles) {
-    volume += dot(mesh.vertices[t[0]], cross(mesh.vertices[t[1]], mesh.vertices[t[2]])) / 6.0;
-  }
-  return volume;
-}
-
 std::string cubeObjWithQuads() {
   std::string text;
   for (const Vec3& v : cubeCorners(1.0f)) {

@@ -76,4 +76,12 @@ SPH_HD Vec3 demContactForce(const ContactCoefficients& k, Vec3 offset, Vec3 rela
   return force;
 }
 
+// A spring with a dashpot along it (the object engine's deformables): the tension, positive
+// when stretched, k (l − l0) + c dl/dt. Each end is pulled toward the other by it.
+template <class Real>
+SPH_HD Real springTension(Real stiffness, Real damping, Real length, Real restLength,
+                          Real stretchRate) {
+  return stiffness * (length - restLength) + damping * stretchRate;
+}
+
 }  // namespace sph

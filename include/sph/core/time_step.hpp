@@ -21,6 +21,17 @@ inline double viscousTimeStep(double factor, double h, double kinematicViscosity
   return kinematicViscosity > 0.0 ? factor * h * h / kinematicViscosity : HUGE_VAL;
 }
 
+// A spring of stiffness k (scaled at most by `peakScale`) on a mass m oscillates at
+// ω = sqrt(k peakScale / m); an explicit step of 1/ω resolves it (seed 1 §8.3's contacts).
+inline double springTimeStep(double mass, double stiffness, double peakScale) {
+  return stiffness > 0.0 ? std::sqrt(mass / (stiffness * peakScale)) : HUGE_VAL;
+}
+
+// Nothing moving at `speed` travels more than `distance` in a step: no tunnelling (§8.3).
+inline double travelTimeStep(double distance, double speed) {
+  return speed > 0.0 ? distance / speed : HUGE_VAL;
+}
+
 // Speed of sound about ten times the largest expected speed keeps density errors near 1 %.
 inline double soundSpeedForMaxSpeed(double maxExpectedSpeed) {
   return 10.0 * maxExpectedSpeed;
