@@ -158,8 +158,13 @@ void ObjectWorld::Impl::addObject(const ObjectDesc& desc, std::size_t index) {
   object.name = desc.name;
   object.motion = desc.motion;
   object.first = position.size();
+  // A solid body's particles are spheres that fill its shape, as the fluid's fill a block and
+  // the walls' lie outside the tank: the fluid and other bodies then meet it at its described
+  // surface, and it floats at the draft its volume gives. A deformable is described by its
+  // particle layer (a vessel's wall).
+  const double inset = desc.motion == ObjectMotion::Deformable ? 0.0 : 0.5 * spacing;
   const ShapeSamples samples =
-      sampleShape(desc.shape, spacing, where, settings.sceneFolder, object.shape);
+      sampleShape(desc.shape, spacing, inset, where, settings.sceneFolder, object.shape);
   object.count = samples.position.size();
 
   // Each particle stands for a cube of edge `spacing`, a surface layer being `spacing` thick;

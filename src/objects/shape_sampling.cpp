@@ -212,8 +212,9 @@ std::filesystem::path resolveMesh(const ShapeDesc& shape, const std::string& sce
 // Mesh: the file's triangles scaled and moved to `center`; surface samples (repeated inwards
 // along their normals for extra layers) or the solid lattice, whose particles with fewer than
 // six lattice neighbours are the surface.
-void sampleMeshShape(const ShapeDesc& shape, double s, int layers, const std::string& where,
-                     const std::string& sceneFolder, BuiltShape& built, Sink& sink) {
+void sampleMeshShape(const ShapeDesc& shape, double s, int layers, double inset,
+                     const std::string& where, const std::string& sceneFolder, BuiltShape& built,
+                     Sink& sink) {
   if (shape.meshFile.empty()) fail(where, "shape.file", "expected a mesh file, got none");
   requirePositive(shape.scale, where, "shape.scale");
   const std::filesystem::path file = resolveMesh(shape, sceneFolder);
@@ -236,7 +237,7 @@ void sampleMeshShape(const ShapeDesc& shape, double s, int layers, const std::st
     for (int k = 0; k < layers; ++k)
       for (std::size_t i = 0; i < points.position.size(); ++i) {
         const DVec3 n = toD(points.normal[i]);
-        sink.add(toD(points.position[i]) - n * (k * s), n, k == 0);
+        sink.add(toD(points.position[i]) - n * (inset + k * s), n, k == 0);
       }
     return;
   }
@@ -300,10 +301,40 @@ std::string formatNumber(double value) {
   return out.str();
 }
 
-ShapeSamples sampleShape(const ShapeDesc& shape, double spacing, const std::string& where,
-                         const std::string& sceneFolder, BuiltShape& built) {
-  const int layers = shape.layers;
-  validateShape(shape, layers, where);
+ShapeDesc insetShape(const ShapeDesc& shape, double inset, const std::string& where) {
+  ShapeDesc placed = shape;
+  if (!(inset > 0.0)) return placed;
+  const std::string why = "a solid body's particles lie half a spacing (" + formatNumber(inset) +
+                          " m) inside its surface; expected ";
+  switch (shape.kind) {
+    case ShapeKind::Box:
+      for (int a = 0; a < 3; ++a) {
+        if (!(shape.halfExtents[a] > inset))
+          fail(where, "shape.half_extents",
+               why + "each above " + formatNumber(inset) + ", got " + describe(shape.halfExtents));
+        placed.halfExtents[a] -= inset;
+      }
+      break;
+    case ShapeKind::Sphere:
+    case ShapeKind::Capsule:
+      if (!(shape.radius > inset))
+        fail(where, "shape.radius",
+             why + "more than " + formatNumber(inset) + ", got " + formatNumber(shape.radius));
+      placed.radius -= inset;
+      break;
+    case ShapeKind::Tube:  // described by its particle layer
+    case ShapeKind::Mesh:  // moved along its normals as it is sampled
+      break;
+  }
+  return placed;
+}
+
+ShapeSamples sampleShape(const ShapeDesc& described, double spacing, double inset,
+                         const std::string& where, const std::string& sceneFolder,
+                         BuiltShape& built) {
+  const int layers = described.layers;
+  validateShape(described, layers, where);
+  const ShapeDesc shape = insetShape(described, inset, where);
   built.desc = shape;
   built.spacing = spacing;
   ShapeSamples samples;
@@ -330,7 +361,7 @@ ShapeSamples sampleShape(const ShapeDesc& shape, double spacing, const std::stri
       built.enclosesVolume = shape.capped && !shape.solid;
       break;
     case ShapeKind::Mesh:
-      sampleMeshShape(shape, spacing, layers, where, sceneFolder, built, sink);
+      sampleMeshShape(shape, spacing, layers, inset, where, sceneFolder, built, sink);
       built.particles = samples.position;
       built.particleGrid.build(built.particles, spacing);
       break;

@@ -32,11 +32,18 @@ struct BuiltShape {
   bool interiorContains(DVec3 p, double margin) const;
 };
 
-// Samples `shape` at `spacing` (> 0). `where` prefixes error messages ("scene.json:
+// Samples `shape` at `spacing` (> 0), its outer particles `inset` inside the described surface
+// (box, sphere, capsule, surface mesh; a tube is described by its particle layer, and a solid
+// mesh's lattice already lies inside). `where` prefixes error messages ("scene.json:
 // objects[2]"); `sceneFolder` resolves relative mesh files. Throws InputError on impossible
 // geometry; fills `built` for later interior tests.
-ShapeSamples sampleShape(const ShapeDesc& shape, double spacing, const std::string& where,
-                         const std::string& sceneFolder, BuiltShape& built);
+ShapeSamples sampleShape(const ShapeDesc& shape, double spacing, double inset,
+                         const std::string& where, const std::string& sceneFolder,
+                         BuiltShape& built);
+
+// `shape` with its surface moved `inset` inwards (box, sphere, capsule; others unchanged).
+// Throws InputError naming the key when the shape is not thicker than that.
+ShapeDesc insetShape(const ShapeDesc& shape, double inset, const std::string& where);
 
 // "0.25", "-1" — how numbers read in error messages.
 std::string formatNumber(double value);

@@ -12,6 +12,7 @@
 
 #include "sim/calibration.hpp"
 #include "sim/fluid_engine.hpp"
+#include "sim/object_clearance.hpp"
 #include "sim/object_runner.hpp"
 #include "sim/sampling.hpp"
 #include "sph/core/kernels.hpp"
@@ -159,6 +160,13 @@ struct Simulation::Impl {
     for (const auto& block : scene.fluid.blocks) {
       auto points = sim::sampleBlock(block.box, scene.fluid.spacing);
       if (!block.inside.empty()) keepInside(points, block.inside, world);
+      if (world) {
+        const int container = block.inside.empty() ? -1 : int(objectIndex(block.inside));
+        sim::removeObjectOverlap(
+            points, *world,
+            [&](float radius) { return interaction::contactReach(interactionParams, radius); },
+            container);
+      }
       if (block.hydrostatic)
         sim::compressHydrostatically(points, block.box, scene.gravity, calibration.soundSpeed);
       const Vec3 v{float(block.velocity[0]), float(block.velocity[1]), float(block.velocity[2])};

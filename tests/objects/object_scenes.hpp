@@ -9,6 +9,13 @@
 
 namespace sph::objects::test {
 
+// A solid (rigid or kinematic) body's particles lie half a spacing inside its described
+// surface. The tests place bodies by their particle layer: `box` and `sphere` describe the
+// shape whose outer particles lie at `halfExtents` / `radius`.
+inline double insetOf(ObjectMotion motion, double spacing) {
+  return motion == ObjectMotion::Deformable ? 0.0 : 0.5 * spacing;
+}
+
 inline ObjectDesc box(Vec3d center, Vec3d halfExtents, double spacing,
                       ObjectMotion motion = ObjectMotion::Rigid) {
   ObjectDesc d;
@@ -16,7 +23,8 @@ inline ObjectDesc box(Vec3d center, Vec3d halfExtents, double spacing,
   d.motion = motion;
   d.shape.kind = ShapeKind::Box;
   d.shape.center = center;
-  d.shape.halfExtents = halfExtents;
+  const double inset = insetOf(motion, spacing > 0.0 ? spacing : 0.01);
+  d.shape.halfExtents = {halfExtents[0] + inset, halfExtents[1] + inset, halfExtents[2] + inset};
   d.spacing = spacing;
   return d;
 }
@@ -28,7 +36,7 @@ inline ObjectDesc sphere(Vec3d center, double radius, double spacing,
   d.motion = motion;
   d.shape.kind = ShapeKind::Sphere;
   d.shape.center = center;
-  d.shape.radius = radius;
+  d.shape.radius = radius + insetOf(motion, spacing > 0.0 ? spacing : 0.01);
   d.spacing = spacing;
   return d;
 }

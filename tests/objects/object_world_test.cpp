@@ -193,8 +193,15 @@ std::string errorOf(const ObjectDesc& d) {
 }
 
 TEST(ObjectWorld, ImpossibleGeometryIsAnInputErrorNamingTheKey) {
-  EXPECT_EQ(errorOf(sphere({0, 0, 0}, 0.0, 0.01)),
+  ObjectDesc pointSphere = sphere({0, 0, 0}, 0.0, 0.01);
+  pointSphere.shape.radius = 0.0;
+  EXPECT_EQ(errorOf(pointSphere),
             "scene.json: objects[1].shape.radius: expected a positive number, got 0");
+  // A solid body's particles lie half a spacing inside its surface: it must be thicker.
+  pointSphere.shape.radius = 0.004;
+  EXPECT_EQ(errorOf(pointSphere),
+            "scene.json: objects[1].shape.radius: a solid body's particles lie half a spacing "
+            "(0.005 m) inside its surface; expected more than 0.005, got 0.004");
   EXPECT_NE(errorOf(box({0, 0, 0}, {0.1, -0.1, 0.1}, 0.01)).find("objects[1].shape.half_extents"),
             std::string::npos);
   EXPECT_NE(errorOf(tube({0, 0, 0}, 0.003, 0.1, 0.01)).find("objects[1].shape.radius"),

@@ -46,8 +46,9 @@ TEST(ShapeSampling, HollowBoxLiesOnItsFacesAtTheSpacing) {
     EXPECT_FLOAT_EQ(p.radius[i], 0.005f);
   }
   expectUnitOutwardNormals(p, c);
-  // A rigid body sampled on its surface weighs what its whole volume does, shared equally.
-  const double volume = 0.2 * 0.1 * 0.04;
+  // A rigid body sampled on its surface weighs what its whole volume does, shared equally;
+  // its described faces lie half a spacing outside the particles.
+  const double volume = 0.21 * 0.11 * 0.05;
   EXPECT_NEAR(world.info(0).mass, 1000.0 * volume, 1e-6);
   EXPECT_FLOAT_EQ(p.mass[0], float(1000.0 * volume / double(p.size())));
 }
@@ -101,7 +102,7 @@ TEST(ShapeSampling, CapsuleIsAtItsRadiusFromTheSegment) {
   ObjectDesc d;
   d.shape.kind = ShapeKind::Capsule;
   d.shape.center = {0.1, 0.2, 0.3};
-  d.shape.radius = 0.02;
+  d.shape.radius = 0.0225;  // the particles lie half a spacing inside
   d.shape.length = 0.04;
   d.shape.axis = {0, 1, 0};
   d.spacing = 0.005;
@@ -241,7 +242,8 @@ TEST(ShapeSampling, MeshIsScaledPlacedAndSampledOnItsSurface) {
   const Vec3 c{1, 0, 0};
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Vec3 x = p.position[i] - c;
-    EXPECT_NEAR(std::max({std::abs(x.x), std::abs(x.y), std::abs(x.z)}), 0.05, 1e-5);
+    // Half a spacing inside its face, along the face's normal.
+    EXPECT_NEAR(dot(x, p.normal[i]), 0.045, 1e-5);
     EXPECT_EQ(p.surface[i], 1);
   }
   expectUnitOutwardNormals(p, c);
@@ -251,7 +253,7 @@ TEST(ShapeSampling, MeshIsScaledPlacedAndSampledOnItsSurface) {
   // Inside the mesh but within the margin of a particle (the test the mesh interior uses).
   std::size_t onFace = p.size();
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.position[i].x > 1.0499f &&
+    if (p.position[i].x > 1.0449f &&
         (onFace == p.size() || length(p.position[i] - c) < length(p.position[onFace] - c)))
       onFace = i;
   ASSERT_LT(onFace, p.size());
