@@ -87,10 +87,9 @@ int runCommand(const RunOptions& options) {
   auto lastFrameWall = Clock::now();
   std::uint64_t lastFrameSteps = 0;
   auto writeFrame = [&] {
-    FrameStats stats = sim.stats();
     const std::uint64_t steps = sim.stepCount() - lastFrameSteps;
-    stats.wallMsPerStep = steps ? 1000.0 * secondsSince(lastFrameWall) / double(steps) : 0.0;
-    output.writeFrame(sim.frame(false), stats);  // objects move: they are in every frame
+    const double wallMsPerStep = steps ? 1000.0 * secondsSince(lastFrameWall) / double(steps) : 0.0;
+    output.writeFrame(sim.capture(), wallMsPerStep);  // objects move: they are in every frame
     lastFrameWall = Clock::now();
     lastFrameSteps = sim.stepCount();
   };
@@ -107,6 +106,7 @@ int runCommand(const RunOptions& options) {
       writeFrame();
     }
   } catch (const SimulationFailure& failure) {
+    output.finish();  // the frames before the failure are kept
     progress.finish(sim.time(), sim.stepCount());
     record.wallSeconds = secondsSince(start);
     record.failure = {{"message", failure.what()},
@@ -118,6 +118,7 @@ int runCommand(const RunOptions& options) {
                  failure.what(), sim.time(), output.dir().c_str());
     return kExitSimulationFailed;
   }
+  output.finish();
   progress.finish(sim.time(), sim.stepCount());
   record.wallSeconds = secondsSince(start);
   writeSummary(output, sim, record);

@@ -46,7 +46,64 @@ void RunOutput::writeBoundary(const ParticleFrame& walls) {
   io::writeFrame(walls, format_, dir_ / (std::string("boundary.") + io::frameExtension(format_)));
 }
 
-void RunOutput::writeFrame(const ParticleFrame& frame, const FrameStats& stats) {
+RunOutput::~RunOutput() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  if (writer_.joinable()) writer_.join();
+}
+
+void RunOutput::writeFrame(FrameCapture capture, double wallMsPerStep) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  if (!writer_.joinable()) writer_ = std::thread([this] { writeQueued(); });
+  changed_.wait(lock, [&] { return queue_.size() < kMaxQueued || error_; });
+  if (error_) std::rethrow_exception(error_);
+  queue_.push_back({std::move(capture), wallMsPerStep});
+  changed_.notify_all();
+}
+
+void RunOutput::finish() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [&] { return (queue_.empty() && !writing_) || error_; });
+  if (error_) std::rethrow_exception(error_);
+}
+
+int RunOutput::framesWritten() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return frames_;
+}
+
+void RunOutput::writeQueued() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  for (;;) {
+    changed_.wait(lock, [&] { return !queue_.empty() || stopping_; });
+    if (queue_.empty()) return;  // stopping, and all written
+    Queued next = std::move(queue_.front());
+    queue_.pop_front();
+    writing_ = true;
+    lock.unlock();
+    try {
+      if (!error_) {
+        ParticleFrame frame;
+        FrameStats stats;
+        next.capture.take(frame, stats);
+        stats.wallMsPerStep = next.wallMsPerStep;
+        write(frame, stats);
+      }
+    } catch (...) {
+      lock.lock();
+      if (!error_) error_ = std::current_exception();
+      lock.unlock();
+    }
+    lock.lock();
+    writing_ = false;
+    changed_.notify_all();
+  }
+}
+
+void RunOutput::write(const ParticleFrame& frame, const FrameStats& stats) {
   if (format_ != FrameFormat::None) {
     char name[64];
     std::snprintf(name, sizeof name, "frame_%05d.%s", frames_, io::frameExtension(format_));
@@ -54,6 +111,7 @@ void RunOutput::writeFrame(const ParticleFrame& frame, const FrameStats& stats) 
     if (series_) series_->add(frame.time, std::string("frames/") + name);
   }
   stats_->append(stats);
+  std::lock_guard<std::mutex> lock(mutex_);
   ++frames_;
 }
 

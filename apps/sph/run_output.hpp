@@ -3,16 +3,22 @@
 // asked.
 #pragma once
 
+#include <condition_variable>
+#include <deque>
+#include <exception>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "io/pvd_series.hpp"
 #include "io/stats_writer.hpp"
 #include "sph/frame.hpp"
 #include "sph/scene.hpp"
+#include "sph/simulation.hpp"
 #include "sph/stats.hpp"
 
 namespace sph::cli {
@@ -24,18 +30,41 @@ class RunOutput {
   RunOutput(std::filesystem::path dir, FrameFormat format, bool force,
             std::vector<std::string> objectNames = {});
 
+  ~RunOutput();  // waits for the frames queued
+
   // Frames hold the fluid; the static walls go once into DIR/boundary.EXT.
   void writeBoundary(const ParticleFrame& walls);
-  void writeFrame(const ParticleFrame& frame, const FrameStats& stats);
+  // Queues the frame; a thread of its own assembles and writes the frames in order while the
+  // simulation goes on. Throws the error of an earlier frame's writing, if any.
+  void writeFrame(FrameCapture capture, double wallMsPerStep);
+  // Waits until every queued frame is written; throws the first writing error.
+  void finish();
   const std::filesystem::path& dir() const { return dir_; }
-  int framesWritten() const { return frames_; }
+  int framesWritten() const;
 
  private:
+  struct Queued {
+    FrameCapture capture;
+    double wallMsPerStep;
+  };
+  void writeQueued();
+  void write(const ParticleFrame& frame, const FrameStats& stats);
+
   std::filesystem::path dir_;
   FrameFormat format_;
   std::optional<io::PvdSeries> series_;
   std::optional<io::StatsWriter> stats_;
   int frames_ = 0;
+
+  // The writer thread and what it shares with the simulation's.
+  static constexpr std::size_t kMaxQueued = 2;  // bounds the memory of frames in flight
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<Queued> queue_;
+  bool writing_ = false;  // the writer holds a frame taken from the queue
+  bool stopping_ = false;
+  std::exception_ptr error_;
+  std::thread writer_;
 };
 
 }  // namespace sph::cli

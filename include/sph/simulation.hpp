@@ -66,6 +66,23 @@ struct SimulationOptions {
   int device = 0;  // CUDA device index
 };
 
+// A frame and its statistics taken at one instant (Simulation::capture) and assembled later,
+// on any thread: the simulation may step meanwhile.
+class FrameCapture {
+ public:
+  FrameCapture(FrameCapture&&) noexcept;
+  FrameCapture& operator=(FrameCapture&&) noexcept;
+  ~FrameCapture();
+  // Waits for the copy; call once. wallMsPerStep is left 0 for the caller to fill.
+  void take(ParticleFrame& frame, FrameStats& stats);
+
+ private:
+  friend class Simulation;
+  struct Impl;
+  explicit FrameCapture(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
 class Simulation {
  public:
   // Throws InputError if the scene cannot be simulated (e.g. no speed of sound derivable) or
@@ -111,6 +128,9 @@ class Simulation {
 
   // Statistics of the current state; wallMsPerStep is left 0 for the caller to fill.
   FrameStats stats() const;
+  // The frame (fluid and objects) and the statistics of the current state, assembled when
+  // taken: on the GPU the particles cross to pinned host memory while the next steps run.
+  FrameCapture capture() const;
   // The particles ordered by id: fluid first, then walls if asked.
   ParticleFrame frame(bool includeBoundary = true) const;
   // The static wall particles alone (they never move: runs write them once).

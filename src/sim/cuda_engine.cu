@@ -1,4 +1,5 @@
 #include "backend/cuda/cuda_backend.cuh"
+#include "sim/cuda_download.cuh"
 #include "sim/engine_impl.hpp"
 #include "sph/devices.hpp"
 #include "sph/error.hpp"

@@ -2,6 +2,8 @@
 // Included by cpu_engine.cpp (g++) and cuda_engine.cu (nvcc) only.
 #pragma once
 
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "fluid/stages.hpp"
@@ -9,6 +11,45 @@
 #include "sim/fluid_engine.hpp"
 
 namespace sph::sim {
+
+// Pinned host memory and snapshots for downloads in flight (cuda_engine.cu); none on the CPU.
+class DownloadStaging;
+
+template <class B>
+HostParticles downloadNow(const fluid::FluidParticles<B>& fluid) {
+  const std::size_t n = fluid.count;
+  HostParticles h;
+  h.id.resize(n);
+  h.position.resize(n);
+  h.velocity.resize(n);
+  h.density.resize(n);
+  h.pressure.resize(n);
+  h.acceleration.resize(n);
+  B::download(fluid.id, h.id.data(), n);
+  B::download(fluid.position, h.position.data(), n);
+  B::download(fluid.velocity, h.velocity.data(), n);
+  B::download(fluid.density, h.density.data(), n);
+  B::download(fluid.pressure, h.pressure.data(), n);
+  B::download(fluid.acceleration, h.acceleration.data(), n);
+  return h;
+}
+
+class ReadyParticles final : public PendingParticles {
+ public:
+  explicit ReadyParticles(HostParticles particles) : particles_(std::move(particles)) {}
+  HostParticles take() override { return std::move(particles_); }
+
+ private:
+  HostParticles particles_;
+};
+
+// The CPU's memory is the host's: the copy is made at once. The CUDA backend specialises this
+// (cuda_engine.cu).
+template <class B>
+std::unique_ptr<PendingParticles> beginParticleDownload(const fluid::FluidParticles<B>& fluid,
+                                                        std::shared_ptr<DownloadStaging>&) {
+  return std::make_unique<ReadyParticles>(downloadNow(fluid));
+}
 
 template <class B>
 class EngineImpl final : public FluidEngine {
@@ -92,22 +133,8 @@ class EngineImpl final : public FluidEngine {
     return fluid::findBadParticle(fluid_, params_.restDensity, maxDensityError);
   }
 
-  HostParticles download() const override {
-    const std::size_t n = fluid_.count;
-    HostParticles h;
-    h.id.resize(n);
-    h.position.resize(n);
-    h.velocity.resize(n);
-    h.density.resize(n);
-    h.pressure.resize(n);
-    h.acceleration.resize(n);
-    B::download(fluid_.id, h.id.data(), n);
-    B::download(fluid_.position, h.position.data(), n);
-    B::download(fluid_.velocity, h.velocity.data(), n);
-    B::download(fluid_.density, h.density.data(), n);
-    B::download(fluid_.pressure, h.pressure.data(), n);
-    B::download(fluid_.acceleration, h.acceleration.data(), n);
-    return h;
+  std::unique_ptr<PendingParticles> beginDownload() const override {
+    return beginParticleDownload(fluid_, staging_);
   }
 
   HostWalls downloadWalls() const override {
@@ -131,6 +158,7 @@ class EngineImpl final : public FluidEngine {
   fluid::FluidParameters params_;
   fluid::DomainParameters domain_;
   fluid::FluidParticles<B> fluid_;
+  mutable std::shared_ptr<DownloadStaging> staging_;  // made on the first download
   fluid::BoundaryParticles<B> boundary_;
   fluid::Grid<B> grid_;
   interaction::ObjectParticles<B> objects_;

@@ -25,6 +25,14 @@ struct HostParticles {
   std::vector<Vec4> acceleration;  // w: |∇c|
 };
 
+// A download begun and not yet waited for (FluidEngine::beginDownload).
+class PendingParticles {
+ public:
+  virtual ~PendingParticles() = default;
+  // Waits for the copy; call once.
+  virtual HostParticles take() = 0;
+};
+
 // The fluid's contact forces on the objects' surface particles, by the engine's handle.
 struct HostObjectForces {
   std::vector<std::uint32_t> handle;
@@ -69,7 +77,11 @@ class FluidEngine {
   virtual HostContainment downloadContainment() const = 0;
 
   virtual fluid::BadParticle findBadParticle(float maxDensityError) const = 0;
-  virtual HostParticles download() const = 0;
+  // Copies the fluid out as it is now, and waits for the copy.
+  HostParticles download() const { return beginDownload()->take(); }
+  // Copies the fluid out as it is now without waiting: the GPU snapshots its arrays and copies
+  // them to pinned host memory while the next steps run; the CPU copies at once.
+  virtual std::unique_ptr<PendingParticles> beginDownload() const = 0;
   virtual HostWalls downloadWalls() const = 0;
   // x, y, z, 0 per fluid particle id; empty removes the external accelerations.
   virtual void setExternalAcceleration(const std::vector<Vec4>& byId) = 0;

@@ -151,6 +151,9 @@ struct Simulation::Impl {
     objects->advance(dt);
   }
 
+  // Time, counts, leaks and objects: the statistics that need no copy of the fluid.
+  FrameStats statsWithoutParticles(const Simulation& sim) const;
+
   static bool useCuda(const SimulationOptions& options) {
     if (options.backend == Backend::Cuda) return true;
     return options.backend == Backend::Auto && !queryGpus().devices.empty();

@@ -1,6 +1,7 @@
 // What a Simulation reports: statistics and frames, from a host copy of the particles, made
 // on demand at output times.
 #include <algorithm>
+#include <optional>
 
 #include "backend/cpu_parallel.hpp"
 #include "sim/simulation_impl.hpp"
@@ -70,8 +71,8 @@ void appendObjects(FrameBuilder& b, const objects::ParticleState& p, std::uint64
                    float restDensity) {
   for (std::size_t k = 0; k < p.size(); ++k) {
     b.push(static_cast<std::uint32_t>(firstId + k), makeVec4(p.position[k]),
-           makeVec4(getenv("DBGN") ? p.normal[k] : p.velocity[k]), restDensity, 0.0f,
-           ParticleKind::Object, p.object[k], p.surface[k] != 0);
+           makeVec4(p.velocity[k]), restDensity, 0.0f, ParticleKind::Object, p.object[k],
+           p.surface[k] != 0);
   }
 }
 
@@ -124,19 +125,18 @@ std::vector<float> Simulation::leakPositions() const {
   return out;
 }
 
-FrameStats Simulation::stats() const {
-  const Impl& s = *impl_;
-  const sim::HostParticles f = s.engine->download();
-  const float restDensity = s.params.restDensity;
-  const float threshold = s.params.surfaceThreshold;
-  const double mass = s.params.mass;
+namespace {
+
+// The statistics that the fluid particles' host copy gives.
+void addParticleSums(FrameStats& out, const sim::HostParticles& f, float restDensity,
+                     float surfaceThreshold, double mass) {
   const Sums sums = backend::reduce(
       f.id.size(), Sums{},
       [&](std::size_t i) {
         const float v2 = lengthSquared(xyz(f.velocity[i]));
         const float error = compression(f.density[i], restDensity);
         return Sums{0.5 * mass * v2, f.density[i], error, v2,
-                    f.acceleration[i].w > threshold ? 1u : 0u};
+                    f.acceleration[i].w > surfaceThreshold ? 1u : 0u};
       },
       [](Sums a, const Sums& b) {
         a.kineticEnergy += b.kineticEnergy;
@@ -147,22 +147,82 @@ FrameStats Simulation::stats() const {
         return a;
       });
   const std::size_t n = f.id.size();
-  FrameStats out;
-  out.time = s.time;
-  out.steps = s.steps;
-  out.dt = s.dt;
   out.fluidCount = n;
-  out.boundaryCount = s.engine->wallCount();
   out.kineticEnergy = sums.kineticEnergy;
   out.meanDensity = n ? sums.density / double(n) : 0.0;
   out.maxDensityError = sums.maxDensityError;
   out.maxSpeed = std::sqrt(double(sums.maxSpeedSquared));
   out.surfaceCount = sums.surface;
-  out.leakedCount = leakedCount();
-  out.removedCount = s.removed;
-  out.contactPairs = s.contactPairs;
-  out.objects = objectStats();
+}
+
+}  // namespace
+
+struct FrameCapture::Impl {
+  std::unique_ptr<sim::PendingParticles> fluid;
+  FrameStats stats;  // all but what the fluid's copy gives
+  std::optional<objects::ParticleState> objects;
+  std::uint64_t initialFluid = 0;
+  std::uint64_t firstObjectId = 0;
+  float restDensity = 0.0f;
+  float surfaceThreshold = 0.0f;
+  double mass = 0.0;
+};
+
+FrameCapture::FrameCapture(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+FrameCapture::FrameCapture(FrameCapture&&) noexcept = default;
+FrameCapture& FrameCapture::operator=(FrameCapture&&) noexcept = default;
+FrameCapture::~FrameCapture() = default;
+
+void FrameCapture::take(ParticleFrame& frame, FrameStats& stats) {
+  Impl& c = *impl_;
+  const sim::HostParticles f = c.fluid->take();
+  stats = c.stats;
+  addParticleSums(stats, f, c.restDensity, c.surfaceThreshold, c.mass);
+  FrameBuilder b;
+  b.out.time = stats.time;
+  b.out.step = stats.steps;
+  b.reserve(f.id.size() + (c.objects ? c.objects->size() : 0));
+  appendFluid(b, f, c.initialFluid, c.surfaceThreshold);
+  if (c.objects) appendObjects(b, *c.objects, c.firstObjectId, c.restDensity);
+  frame = std::move(b.out);
+}
+
+FrameStats Simulation::Impl::statsWithoutParticles(const Simulation& sim) const {
+  FrameStats out;
+  out.time = time;
+  out.steps = steps;
+  out.dt = dt;
+  out.boundaryCount = engine->wallCount();
+  out.leakedCount = sim.leakedCount();
+  out.removedCount = removed;
+  out.contactPairs = contactPairs;
+  out.objects = sim.objectStats();
   return out;
+}
+
+FrameStats Simulation::stats() const {
+  const Impl& s = *impl_;
+  FrameStats out = s.statsWithoutParticles(*this);
+  addParticleSums(out, s.engine->download(), s.params.restDensity, s.params.surfaceThreshold,
+                  s.params.mass);
+  return out;
+}
+
+FrameCapture Simulation::capture() const {
+  const Impl& s = *impl_;
+  auto c = std::make_unique<FrameCapture::Impl>();
+  c->fluid = s.engine->beginDownload();
+  c->stats = s.statsWithoutParticles(*this);
+  if (s.objects) {
+    s.objects->wait();
+    c->objects = s.objects->world().particles();
+  }
+  c->initialFluid = s.initialFluid;
+  c->firstObjectId = s.initialFluid + s.engine->wallCount();
+  c->restDensity = s.params.restDensity;
+  c->surfaceThreshold = s.params.surfaceThreshold;
+  c->mass = s.params.mass;
+  return FrameCapture(std::move(c));
 }
 
 ParticleFrame Simulation::frame(bool includeBoundary) const {
