@@ -8,6 +8,7 @@
 #include "fluid/particles.hpp"
 #include "sph/core/eos.hpp"
 #include "sph/core/momentum.hpp"
+#include "sph/core/read_only.hpp"
 
 namespace sph::fluid {
 
@@ -39,7 +40,7 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
         std::uint32_t* list = neighbors + i * stride;
         std::uint32_t count = 0;
         forEachNeighbor(spec, cellStart, xi, [&](std::uint32_t j) {
-          const float r2 = lengthSquared(xi - xyz(position[j]));
+          const float r2 = lengthSquared(xi - xyz(readOnly(position + j)));
           if (r2 >= h2) return;
           sum += kernels.W(r2);
           if (j != i && count < stride) list[count] = j;
@@ -49,7 +50,8 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
         float wallSum = 0.0f;  // Akinci et al. 2012 eq. 6: walls count with mass ρ0 ψ_b
         if (wallCellStart != nullptr) {
           forEachNeighbor(wallGrid, wallCellStart, xi, [&](std::uint32_t b) {
-            wallSum += wall[b].w * kernels.W(lengthSquared(xi - xyz(wall[b])));
+            const Vec4 xb = readOnly(wall + b);
+            wallSum += xb.w * kernels.W(lengthSquared(xi - xyz(xb)));
           });
         }
         const float rho = p.mass * sum + p.restDensity * wallSum;

@@ -8,6 +8,7 @@
 #include "fluid/parameters.hpp"
 #include "fluid/particles.hpp"
 #include "sph/core/momentum.hpp"
+#include "sph/core/read_only.hpp"
 
 namespace sph::fluid {
 
@@ -54,18 +55,18 @@ void forcePass(FluidParticles<B>& fluid, const Grid<B>& grid, const BoundaryPart
         float colourLaplacian = 0.0f;
 
         auto pair = [&](std::uint32_t j) {
-          const Vec3 rij = xi - xyz(position[j]);
+          const Vec3 rij = xi - xyz(readOnly(position + j));
           const float r2 = lengthSquared(rij);
           if (r2 >= h2 || j == i) return;
           const float r = realSqrt(r2);
-          const Vec4 sj = state[j];
+          const Vec4 sj = readOnly(state + j);
           const Vec3 gradW = rij * kernels.gradFactor(r);
           if (kSymmetric) {
             a += pressureAccelerationSymmetric(p.mass, si.x, sj.x, gradW);
           } else {
             a += pressureAccelerationPaper(p.mass, pI, si.y, sj.z, sj.y, gradW);
           }
-          const Vec3 vij = vi - xyz(velocity[j]);
+          const Vec3 vij = vi - xyz(readOnly(velocity + j));
           if (kArtificial) {
             a += artificialViscosityAcceleration(p.viscosity, p.soundSpeed, p.h, p.mass, rhoI, sj.w,
                                                  vij, rij, r2, gradW);
@@ -80,18 +81,19 @@ void forcePass(FluidParticles<B>& fluid, const Grid<B>& grid, const BoundaryPart
         const std::uint32_t count = neighborCount[i];
         if (count != kNeighborOverflow) {
           const std::uint32_t* list = neighbors + i * stride;
-          for (std::uint32_t k = 0; k < count; ++k) pair(list[k]);
+          for (std::uint32_t k = 0; k < count; ++k) pair(readOnly(list + k));
         } else {
           forEachNeighbor(spec, cellStart, xi, pair);
         }
 
         if (wallCellStart != nullptr) {
           forEachNeighbor(wallGrid, wallCellStart, xi, [&](std::uint32_t b) {
-            const Vec3 rib = xi - xyz(wall[b]);
+            const Vec4 xb = readOnly(wall + b);
+            const Vec3 rib = xi - xyz(xb);
             const float r2 = lengthSquared(rib);
             if (r2 >= h2 || r2 <= 0.0f) return;
             const float r = realSqrt(r2);
-            const float volumeB = wall[b].w;
+            const float volumeB = xb.w;
             const float massB = p.restDensity * volumeB;
             const Vec3 gradW = rib * kernels.gradFactor(r);
             const float pB = wallPressure(pI, rhoI, p.gravity, -rib, p.clampNegativePressure);

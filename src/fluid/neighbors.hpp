@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "sph/core/grid.hpp"
+#include "sph/core/read_only.hpp"
 
 namespace sph::fluid {
 
@@ -18,8 +19,8 @@ SPH_HD void forEachNeighbor(const GridSpec& grid, const std::uint32_t* cellStart
     if (z < 0 || z >= grid.dims.z) continue;
     for (int y = c.y - 1; y <= c.y + 1; ++y) {
       if (y < 0 || y >= grid.dims.y) continue;
-      const std::uint32_t begin = cellStart[cellIndex(grid, Int3{x0, y, z})];
-      const std::uint32_t end = cellStart[cellIndex(grid, Int3{x1, y, z}) + 1];
+      const std::uint32_t begin = readOnly(cellStart + cellIndex(grid, Int3{x0, y, z}));
+      const std::uint32_t end = readOnly(cellStart + cellIndex(grid, Int3{x1, y, z}) + 1);
       for (std::uint32_t j = begin; j < end; ++j) visit(j);
     }
   }

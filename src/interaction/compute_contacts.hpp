@@ -15,6 +15,7 @@
 #include "interaction/object_particles.hpp"
 #include "interaction/prepare_object_particles.hpp"
 #include "sph/core/contact.hpp"
+#include "sph/core/read_only.hpp"
 
 namespace sph::interaction {
 
@@ -93,11 +94,12 @@ std::size_t computeContacts(fluid::FluidParticles<B>& fluid, const fluid::Grid<B
         if (detail::nearGrid(objectGrid, xi)) {
           const Vec3 vi = xyz(velocity[i]);
           fluid::forEachNeighbor(objectGrid, objectCellStart, xi, [&](std::uint32_t o) {
-            const Vec4 xo = objectPosition[o];
-            force += detail::fluidContactForce(p, xi, vi, xo, objectVelocity[o]);
-            const Vec4 no = objectNormal[o];
+            const Vec4 xo = readOnly(objectPosition + o);
+            const Vec4 vo = readOnly(objectVelocity + o);
+            force += detail::fluidContactForce(p, xi, vi, xo, vo);
+            const Vec4 no = readOnly(objectNormal + o);
             // Torn particles (w of the velocity) have no surface to be on a side of.
-            if (container >= 0 && int(no.w) == container && objectVelocity[o].w == 0.0f) {
+            if (container >= 0 && int(no.w) == container && vo.w == 0.0f) {
               const Vec3 offset = xi - xyz(xo);
               const float r2 = lengthSquared(offset);
               if (r2 < reach2) {
@@ -139,9 +141,9 @@ std::size_t computeContacts(fluid::FluidParticles<B>& fluid, const fluid::Grid<B
         if (detail::nearGrid(spec, xyz(xo))) {
           const float reach = contactReach(p, xo.w);
           fluid::forEachNeighbor(spec, fluidCellStart, xyz(xo), [&](std::uint32_t j) {
-            const Vec3 xj = xyz(position[j]);
+            const Vec3 xj = xyz(readOnly(position + j));
             if (lengthSquared(xj - xyz(xo)) >= reach * reach) return;
-            force -= detail::fluidContactForce(p, xj, xyz(velocity[j]), xo, vo);
+            force -= detail::fluidContactForce(p, xj, xyz(readOnly(velocity + j)), xo, vo);
             touching += 1.0f;
           });
         }
