@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "sph/frame.hpp"
@@ -83,6 +84,15 @@ class FrameCapture {
   std::unique_ptr<Impl> impl_;
 };
 
+// What may change while a simulation runs (the viewer's panel), in the scene's units.
+struct LiveParameters {
+  double viscosity = 0.0;       // fluid.viscosity: μ (Müller) or α (artificial)
+  double stiffness = 0.0;       // of the equation of state; the speed of sound follows it
+  Vec3d gravity{0, 0, 0};       // m/s²
+  double surfaceTension = 0.0;  // σ, N/m
+  double influenceRatio = 0.0;  // interaction.influence_ratio (scenes with objects)
+};
+
 class Simulation {
  public:
   // Throws InputError if the scene cannot be simulated (e.g. no speed of sound derivable) or
@@ -103,6 +113,16 @@ class Simulation {
   // `byId` holds x, y, z for ids 0 .. fluidParticles-1. It stays until replaced; an empty
   // vector removes it. Throws std::invalid_argument on a wrong size.
   void setExternalAcceleration(const std::vector<float>& byId);
+
+  LiveParameters liveParameters() const;
+  // From the next step on. c0² is proportional to the stiffness for every equation of state,
+  // so the speed of sound, and with it the time step and the contact calibration, follow.
+  // Throws InputError naming the key on a value out of range; nothing changes then.
+  void setLiveParameters(const LiveParameters& values);
+  // Moves the kinematic object `name` in a straight line to `offset` (m, from where it
+  // started) over the next `arriveIn` seconds, and holds it there: a user dragging it.
+  // Throws InputError when no kinematic object has that name.
+  void steerObject(const std::string& name, const Vec3d& offset, double arriveIn);
 
   double time() const;
   std::uint64_t stepCount() const;

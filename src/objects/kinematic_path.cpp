@@ -37,6 +37,36 @@ KinematicPose KinematicPath::at(double t) const {
   return pose;
 }
 
+KeyframeDesc KinematicPath::sample(double t) const {
+  KeyframeDesc out;
+  out.time = t;
+  if (keys_.empty()) return out;
+  if (t >= keys_.back().time || keys_.size() == 1) {
+    const KeyframeDesc& last = t >= keys_.back().time ? keys_.back() : keys_.front();
+    out.offset = last.offset;
+    out.rotation = last.rotation;
+    return out;
+  }
+  std::size_t k = 0;
+  while (k + 2 < keys_.size() && t >= keys_[k + 1].time) ++k;
+  const KeyframeDesc& a = keys_[k];
+  const KeyframeDesc& b = keys_[k + 1];
+  const double alpha = std::max(0.0, (t - a.time) / (b.time - a.time));
+  for (int i = 0; i < 3; ++i) {
+    out.offset[i] = a.offset[i] + (b.offset[i] - a.offset[i]) * alpha;
+    out.rotation[i] = a.rotation[i] + (b.rotation[i] - a.rotation[i]) * alpha;
+  }
+  return out;
+}
+
+void KinematicPath::steer(double now, const DVec3& offset, double arriveIn) {
+  const KeyframeDesc from = sample(now);
+  KeyframeDesc to = from;
+  to.time = now + arriveIn;
+  to.offset = {offset.x, offset.y, offset.z};
+  keys_ = {from, to};
+}
+
 void validateKeyframes(const std::vector<KeyframeDesc>& keyframes, const std::string& where) {
   for (std::size_t k = 0; k < keyframes.size(); ++k) {
     const double t = keyframes[k].time;

@@ -26,7 +26,14 @@ class KinematicPath {
   // contains t), so that contacts see the motion about to happen.
   KinematicPose at(double t) const;
 
+  // From `now` on, a straight line from the pose at `now` to `offset` over `arriveIn` s
+  // (> 0), the rotation held, then rest there: the path of an object a user drags.
+  void steer(double now, const DVec3& offset, double arriveIn);
+
  private:
+  // The keyframe values interpolated at t: offset and rotation vector.
+  KeyframeDesc sample(double t) const;
+
   std::vector<KeyframeDesc> keys_;  // with the identity prepended at t = 0 when the first is later
 };
 

@@ -472,6 +472,15 @@ bool ObjectWorld::interiorContains(std::size_t object, Vec3 p, float margin) con
   return impl_->objects.at(object).shape.interiorContains(toD(p), margin);
 }
 
+void ObjectWorld::steer(std::size_t object, Vec3 offset, double arriveIn) {
+  Impl& w = *impl_;
+  const Impl::Object& o = w.objects.at(object);
+  if (o.motion != ObjectMotion::Kinematic)
+    throw std::invalid_argument("steer: object '" + o.name + "' is not kinematic");
+  if (!(arriveIn > 0.0)) throw std::invalid_argument("steer: expected a time > 0");
+  w.paths[o.body].steer(w.time, toD(offset), arriveIn);
+}
+
 bool ObjectWorld::enclosesVolume(std::size_t object) const {
   return impl_->objects.at(object).shape.enclosesVolume;
 }

@@ -85,6 +85,8 @@ class ObjectWorld {
   // False for shapes that enclose nothing (an open tube, a solid body's own volume counts).
   bool interiorContains(std::size_t object, Vec3 p, float margin) const;
   bool enclosesVolume(std::size_t object) const;
+  // See KinematicPath::steer. Throws std::invalid_argument unless `object` is kinematic.
+  void steer(std::size_t object, Vec3 offset, double arriveIn);
 
  private:
   struct Impl;

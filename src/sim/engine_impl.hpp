@@ -146,6 +146,8 @@ class EngineImpl final : public FluidEngine {
     return w;
   }
 
+  void setParameters(const fluid::FluidParameters& params) override { params_ = params; }
+
   void setExternalAcceleration(const std::vector<Vec4>& byId) override {
     if (byId.empty()) {
       fluid_.externalById.resize(0);

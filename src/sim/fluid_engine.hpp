@@ -85,6 +85,8 @@ class FluidEngine {
   virtual HostWalls downloadWalls() const = 0;
   // x, y, z, 0 per fluid particle id; empty removes the external accelerations.
   virtual void setExternalAcceleration(const std::vector<Vec4>& byId) = 0;
+  // New values for the next steps (Simulation::setLiveParameters); the particles stay.
+  virtual void setParameters(const fluid::FluidParameters& params) = 0;
 };
 
 struct EngineSetup {

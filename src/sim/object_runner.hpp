@@ -28,6 +28,7 @@ class ObjectRunner {
   ObjectExchange& exchange() { return exchange_; }
   // The engine's state; call wait() first.
   const objects::ObjectWorld& world() const { return world_; }
+  objects::ObjectWorld& world() { return world_; }
 
   // The fluid has taken a step of length dt and deposited its forces: the engine does its part
   // (in its thread, returning at once, or here).

@@ -102,9 +102,13 @@ struct Simulation::Impl {
 
   // Contacts are found through the fluid's grid (cell edge h) from the object particles.
   void checkContactReach(const objects::ObjectWorld& world) const {
+    checkContactReach(world, interactionParams);
+  }
+  void checkContactReach(const objects::ObjectWorld& world,
+                         const interaction::InteractionParameters& candidate) const {
     float largest = 0.0f;
     for (float r : world.particles().radius)
-      largest = std::max(largest, interaction::contactReach(interactionParams, r));
+      largest = std::max(largest, interaction::contactReach(candidate, r));
     if (largest > params.h) {
       std::ostringstream message;
       message << scene.sourcePath << ": interaction.influence_ratio: the influence sphere reaches "
