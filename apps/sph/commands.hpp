@@ -21,6 +21,34 @@ struct RunOptions {
   std::vector<std::string> overrides;
   bool force = false;
   bool quiet = false;
+  bool render = false;  // then `sph render` the run's directory with its defaults
+};
+
+struct RenderOptions {
+  std::string dir;
+  std::string colour = "kind";  // kind, density, pressure, speed or surface
+  std::vector<double> range;    // {min, max}; empty: from the run's fluid
+  int width = 1280;
+  int height = 720;
+  double fps = 0.0;  // 0: the run's frame rate (summary.json), else 30
+  bool noVideo = false;
+  bool boundary = false;  // show the walls
+  bool grid = false;      // show the domain and the uniform grid's cells
+  bool quiet = false;
+};
+
+struct ViewCommandOptions {
+  std::string scene;
+  std::string backend = "cpu";
+  int threads = 0;
+  int device = 0;
+  std::vector<std::string> overrides;
+  int width = 1280;
+  int height = 720;
+  std::string colour = "kind";
+  bool noProbe = false;
+  int frames = 0;  // close after this many displayed frames (0: when the window closes)
+  std::string screenshot;
 };
 
 struct BenchOptions {
@@ -41,6 +69,13 @@ int runCommand(const RunOptions& options);
 int validateCommand(const std::string& scene, const std::vector<std::string>& overrides);
 int infoCommand();
 int benchCommand(const BenchOptions& options);
+// Images (DIR/images/frame_NNNNN.png) and a video (DIR/video.mp4) of a finished run.
+int renderCommand(const RenderOptions& options);
+// The interactive viewer (apps/view). Exit 1 when no window can be opened.
+int viewCommand(const ViewCommandOptions& options);
+bool viewerBuilt();
+// False in builds without the renderer (SPH_WITH_VIEWER=OFF, or its libraries missing).
+bool rendererBuilt();
 
 // The options that choose where a Simulation runs. "cuda" without a usable GPU makes the
 // Simulation throw an InputError that says why; "auto" takes the GPU when there is one.

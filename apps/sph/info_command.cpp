@@ -46,6 +46,13 @@ int infoCommand() {
   } else {
     std::printf("  cuda  built (--backend cuda, or auto when a GPU is present)\n");
   }
+  std::printf("graphics:\n");
+  std::printf("  render  %s\n", rendererBuilt()
+                                    ? "built (sph render, sph run --render; EGL offscreen)"
+                                    : "not built (SPH_WITH_VIEWER=OFF or its libraries missing)");
+  std::printf("  view    %s\n",
+              viewerBuilt() ? "built (sph view; needs a display)"
+                            : "not built (SPH_WITH_VIEWER=OFF or GLFW, Dear ImGui missing)");
   std::printf("devices:\n");
   printGpus(stdout);
   return kExitOk;

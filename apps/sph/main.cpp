@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
   runCmd->add_option("--set", run.overrides, "Override a scene key: dotted.key=value")->take_all();
   runCmd->add_flag("--force", run.force, "Overwrite an earlier run in the output directory");
   runCmd->add_flag("--quiet", run.quiet, "No progress output");
+  runCmd->add_flag("--render", run.render,
+                   "Then render the run: DIR/images/*.png and DIR/video.mp4 (as sph render)");
 
   std::string validateScene;
   std::vector<std::string> validateOverrides;
@@ -39,6 +41,49 @@ int main(int argc, char** argv) {
       ->take_all();
 
   auto* infoCmd = app.add_subcommand("info", "Build, backends and devices");
+
+  RenderOptions render;
+  auto* renderCmd =
+      app.add_subcommand("render", "Images and a video of an earlier run, without a display");
+  renderCmd->add_option("dir", render.dir, "The run's output directory (sph run --out DIR)")
+      ->required();
+  renderCmd->add_option("--colour,--color", render.colour, "Colour by what (default: kind)")
+      ->check(CLI::IsMember({"kind", "density", "pressure", "speed", "surface"}));
+  renderCmd
+      ->add_option("--range", render.range,
+                   "MIN,MAX of the colour map (default: the fluid's 2nd-98th percentile)")
+      ->delimiter(',')
+      ->expected(2);
+  renderCmd->add_option("--width", render.width, "Image width in pixels")
+      ->check(CLI::Range(16, 8192));
+  renderCmd->add_option("--height", render.height, "Image height in pixels")
+      ->check(CLI::Range(16, 8192));
+  renderCmd->add_option("--fps", render.fps, "Video frames per second (default: the run's)")
+      ->check(CLI::PositiveNumber);
+  renderCmd->add_flag("--no-video", render.noVideo, "Images only");
+  renderCmd->add_flag("--boundary", render.boundary, "Show the walls (DIR/boundary.EXT)");
+  renderCmd->add_flag("--grid", render.grid, "Show the domain box and the uniform grid's cells");
+  renderCmd->add_flag("--quiet", render.quiet, "No progress output");
+
+  ViewCommandOptions view;
+  auto* viewCmd = app.add_subcommand("view", "The interactive viewer: a window that runs a scene");
+  viewCmd->add_option("scene", view.scene, "Scene file (JSON)")->required();
+  viewCmd->add_option("--backend", view.backend, "cpu, cuda or auto")
+      ->check(CLI::IsMember({"cpu", "cuda", "auto"}));
+  viewCmd->add_option("--threads", view.threads, "CPU threads (default: all)");
+  viewCmd->add_option("--device", view.device, "CUDA device index (see sph info)")
+      ->check(CLI::NonNegativeNumber);
+  viewCmd->add_option("--set", view.overrides, "Override a scene key: dotted.key=value")
+      ->take_all();
+  viewCmd->add_option("--width", view.width, "Window width in pixels")->check(CLI::Range(16, 8192));
+  viewCmd->add_option("--height", view.height, "Window height in pixels")
+      ->check(CLI::Range(16, 8192));
+  viewCmd->add_option("--colour,--color", view.colour, "Colour by what (default: kind)")
+      ->check(CLI::IsMember({"kind", "density", "pressure", "speed", "surface"}));
+  viewCmd->add_flag("--no-probe", view.noProbe, "No sphere for the mouse to drag");
+  viewCmd->add_option("--frames", view.frames, "Close after this many displayed frames")
+      ->check(CLI::NonNegativeNumber);
+  viewCmd->add_option("--screenshot", view.screenshot, "Write the last frame to this PNG file");
 
   BenchOptions bench;
   auto* benchCmd = app.add_subcommand("bench", "Milliseconds per step by stage (seed's box drop)");
@@ -65,10 +110,13 @@ int main(int argc, char** argv) {
       if (!duration.empty()) run.overrides.push_back("time.duration=" + duration);
       if (!fps.empty()) run.overrides.push_back("output.fps=" + fps);
       if (!format.empty()) run.overrides.push_back("output.format=" + format);
+      if (run.render && !rendererBuilt()) return renderCommand({});  // says why, before running
       return runCommand(run);
     }
     if (*validateCmd) return validateCommand(validateScene, validateOverrides);
     if (*infoCmd) return infoCommand();
+    if (*renderCmd) return renderCommand(render);
+    if (*viewCmd) return viewCommand(view);
     if (*benchCmd) return benchCommand(bench);
     return static_cast<int>(kExitBadInput);
   };

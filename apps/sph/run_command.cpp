@@ -142,6 +142,12 @@ int runCommand(const RunOptions& options) {
                   output.dir().c_str(), output.dir().c_str());
     }
   }
+  if (options.render) {
+    RenderOptions render;
+    render.dir = output.dir().string();
+    render.quiet = options.quiet;
+    return renderCommand(render);
+  }
   return kExitOk;
 }
 

@@ -12,8 +12,9 @@ namespace fs = std::filesystem;
 namespace {
 
 // The files a run writes; --force removes these and nothing else.
-const char* const kRunFiles[] = {"frames",       "frames.pvd",   "stats.csv",   "summary.json",
-                                 "boundary.vtp", "boundary.ply", "boundary.csv"};
+const char* const kRunFiles[] = {"frames",       "frames.pvd",   "stats.csv",
+                                 "summary.json", "boundary.vtp", "boundary.ply",
+                                 "boundary.csv", "images",       "video.mp4"};
 
 bool holdsEarlierRun(const fs::path& dir) {
   for (const char* name : kRunFiles)

@@ -1,0 +1,39 @@
+// A frame's particles through the colour map: the quantity each shows, the range it is mapped
+// over, and which particles are drawn at all. No GL, so `sph render` and the tests share it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "colour_map.hpp"
+#include "sph/frame.hpp"
+
+namespace sph::render {
+
+struct ParticleFilter {
+  bool fluid = true;
+  bool boundary = true;  // walls
+  bool objects = true;
+};
+
+// The quantity shown for particle i: density (kg/m³), pressure (Pa) or speed (m/s); 0 for modes
+// that map no quantity.
+float particleValue(const ParticleFrame& frame, std::size_t i, ColourMode mode);
+
+// A range for `mode` taken from the fluid of `frames` (objects and walls have no SPH density or
+// pressure of their own): the 2nd to 98th percentile, so that a few splashing or compressed
+// particles do not wash out the rest; density is centred on the median (about the rest density),
+// pressure and speed start at 0 when nothing is below it. Never of zero width.
+ValueRange rangeFromFrames(const std::vector<const ParticleFrame*>& frames, ColourMode mode);
+
+// The colour of particle i.
+Rgb particleColour(const ParticleFrame& frame, std::size_t i, ColourMode mode, ValueRange range);
+
+bool particleShown(const ParticleFrame& frame, std::size_t i, const ParticleFilter& filter);
+
+// RGBA8 per particle, alpha 0 for particles the filter hides.
+std::vector<std::uint8_t> particleColours(const ParticleFrame& frame, ColourMode mode,
+                                          ValueRange range, const ParticleFilter& filter);
+
+}  // namespace sph::render

@@ -1,0 +1,179 @@
+#include "particle_renderer.hpp"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "colour_bar.hpp"
+#include "gl_program.hpp"
+#include "shaders.hpp"
+#include "wireframe.hpp"
+
+namespace sph::render {
+
+struct ParticleRenderer::Programs {
+  GlProgram spheres{"sphere", shaders::kSphereVertex, shaders::kSphereFragment};
+  GlProgram lines{"line", shaders::kLineVertex, shaders::kLineFragment};
+  GlProgram overlay{"overlay", shaders::kOverlayVertex, shaders::kOverlayFragment};
+};
+
+namespace {
+
+// Light from the upper left, slightly in front: a 3/4 view's spheres read as round.
+constexpr float kLight[3] = {-0.40f, 0.70f, 0.59f};
+
+void vertexAttribute(GLuint index, GLint components, GLenum type, GLboolean normalised,
+                     GLsizei stride, std::size_t offset) {
+  glEnableVertexAttribArray(index);
+  glVertexAttribPointer(index, components, type, normalised, stride,
+                        reinterpret_cast<const void*>(offset));
+}
+
+// Lines a little lighter than the background, so they show without competing with the fluid.
+Rgb lineColour(const Rgb& background, float lift) {
+  return {background.r + lift, background.g + lift, background.b + lift};
+}
+
+}  // namespace
+
+ParticleRenderer::ParticleRenderer() : programs_(std::make_unique<Programs>()) {
+  glGenVertexArrays(1, &particleVao_);
+  glGenBuffers(1, &positionBuffer_);
+  glGenBuffers(1, &colourBuffer_);
+  glBindVertexArray(particleVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, positionBuffer_);
+  vertexAttribute(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), 0);
+  glBindBuffer(GL_ARRAY_BUFFER, colourBuffer_);
+  vertexAttribute(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, 4, 0);
+
+  glGenVertexArrays(1, &lineVao_);
+  glGenBuffers(1, &lineBuffer_);
+  glBindVertexArray(lineVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, lineBuffer_);
+  vertexAttribute(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), 0);
+
+  glGenVertexArrays(1, &overlayVao_);
+  glGenBuffers(1, &overlayBuffer_);
+  glBindVertexArray(overlayVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, overlayBuffer_);
+  vertexAttribute(0, 2, GL_FLOAT, GL_FALSE, 5 * sizeof(float), 0);
+  vertexAttribute(1, 3, GL_FLOAT, GL_FALSE, 5 * sizeof(float), 2 * sizeof(float));
+  glBindVertexArray(0);
+}
+
+ParticleRenderer::~ParticleRenderer() {
+  const GLuint buffers[] = {positionBuffer_, colourBuffer_, lineBuffer_, overlayBuffer_};
+  glDeleteBuffers(4, buffers);
+  const GLuint arrays[] = {particleVao_, lineVao_, overlayVao_};
+  glDeleteVertexArrays(3, arrays);
+}
+
+void ParticleRenderer::setParticles(const ParticleFrame& frame) {
+  frame_ = frame;
+  const std::size_t n = frame.size();
+  std::vector<float> positions(4 * n);
+  for (std::size_t i = 0; i < n; ++i) std::copy_n(&frame.position[3 * i], 3, &positions[4 * i]);
+  glBindBuffer(GL_ARRAY_BUFFER, positionBuffer_);
+  if (n > capacity_) {
+    capacity_ = n;
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(4 * n * sizeof(float)), positions.data(),
+                 GL_DYNAMIC_DRAW);
+  } else if (n > 0) {
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(4 * n * sizeof(float)), positions.data());
+  }
+}
+
+void ParticleRenderer::uploadColours(const DrawSettings& settings) {
+  range_ = settings.range ? *settings.range : rangeFromFrames({&frame_}, settings.colour);
+  const std::vector<std::uint8_t> rgba =
+      particleColours(frame_, settings.colour, range_, settings.show);
+  glBindBuffer(GL_ARRAY_BUFFER, colourBuffer_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(rgba.size()), rgba.data(), GL_DYNAMIC_DRAW);
+}
+
+void ParticleRenderer::draw(const OrbitCamera& camera, const DrawSettings& settings, int width,
+                            int height) {
+  glViewport(0, 0, width, height);
+  glClearColor(settings.background.r, settings.background.g, settings.background.b, 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+
+  const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+  const Mat4f view = camera.view();
+  const Mat4f projection = camera.projection(aspect);
+  const Mat4f viewProjection = multiply(projection, view);
+  if (settings.showGrid)
+    drawLines(gridOnBackFaces(settings.domain, settings.gridCellSize, camera.eye()), viewProjection,
+              lineColour(settings.background, 0.10f));
+  if (settings.showDomain || settings.showGrid)
+    drawLines(boxEdges(settings.domain), viewProjection, lineColour(settings.background, 0.35f));
+  if (!frame_.id.empty()) {
+    uploadColours(settings);
+    drawParticles(view, projection, settings, height);
+  }
+  if (settings.showColourBar && usesRange(settings.colour)) drawColourBar(width, height);
+  glBindVertexArray(0);
+}
+
+void ParticleRenderer::drawParticles(const Mat4f& view, const Mat4f& projection,
+                                     const DrawSettings& settings, int height) {
+  const GlProgram& program = programs_->spheres;
+  glUseProgram(program.id());
+  glUniformMatrix4fv(program.uniform("view"), 1, GL_FALSE, view.data());
+  glUniformMatrix4fv(program.uniform("projection"), 1, GL_FALSE, projection.data());
+  glUniform1f(program.uniform("radius"), settings.particleRadius);
+  glUniform1f(program.uniform("viewportHeight"), static_cast<float>(height));
+  const float length =
+      std::sqrt(kLight[0] * kLight[0] + kLight[1] * kLight[1] + kLight[2] * kLight[2]);
+  glUniform3f(program.uniform("lightDirection"), kLight[0] / length, kLight[1] / length,
+              kLight[2] / length);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glBindVertexArray(particleVao_);
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(frame_.size()));
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+}
+
+void ParticleRenderer::drawLines(const std::vector<float>& lines, const Mat4f& viewProjection,
+                                 const Rgb& colour) {
+  if (lines.empty()) return;
+  const GlProgram& program = programs_->lines;
+  glUseProgram(program.id());
+  glUniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, viewProjection.data());
+  glUniform4f(program.uniform("colour"), colour.r, colour.g, colour.b, 1.0f);
+  glBindVertexArray(lineVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, lineBuffer_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(lines.size() * sizeof(float)), lines.data(),
+               GL_STREAM_DRAW);
+  glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.size() / 3));
+}
+
+void ParticleRenderer::drawColourBar(int width, int height) {
+  const std::vector<float> triangles = colourBarTriangles(width, height);
+  glUseProgram(programs_->overlay.id());
+  glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(overlayVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, overlayBuffer_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(triangles.size() * sizeof(float)), triangles.data(),
+               GL_STREAM_DRAW);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.size() / 5));
+  glEnable(GL_DEPTH_TEST);
+}
+
+std::vector<std::uint8_t> readRgbPixels(int width, int height) {
+  const std::size_t row = 3 * static_cast<std::size_t>(width);
+  std::vector<std::uint8_t> pixels(row * static_cast<std::size_t>(height));
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+  // GL's rows start at the bottom; images start at the top.
+  for (int y = 0; y < height / 2; ++y)
+    std::swap_ranges(pixels.begin() + std::ptrdiff_t(row) * y,
+                     pixels.begin() + std::ptrdiff_t(row) * (y + 1),
+                     pixels.begin() + std::ptrdiff_t(row) * (height - 1 - y));
+  return pixels;
+}
+
+}  // namespace sph::render

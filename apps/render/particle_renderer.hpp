@@ -1,0 +1,79 @@
+// Draws a frame's particles as shaded spheres, coloured through colour_map / particle_colours,
+// with an optional domain box, grid and colour bar. It needs only a current OpenGL 3.3 core
+// context (an OffscreenContext, or a window's) and draws into whatever framebuffer is bound.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "camera.hpp"
+#include "colour_map.hpp"
+#include "particle_colours.hpp"
+#include "sph/frame.hpp"
+
+namespace sph::render {
+
+struct DrawSettings {
+  ColourMode colour = ColourMode::Kind;
+  std::optional<ValueRange> range;  // none: taken from the particles (rangeFromFrames)
+  ParticleFilter show;              // fluid, walls, objects
+  float particleRadius = 0.005f;    // world units: half the particle spacing
+  bool showDomain = false;          // the domain's edges
+  bool showGrid = false;            // the uniform grid's cells on the domain's far faces
+  Box3f domain;
+  float gridCellSize = 0.0f;  // the support radius h
+  bool showColourBar = true;  // for the modes that map a quantity
+  Rgb background{0.11f, 0.12f, 0.14f};
+};
+
+class ParticleRenderer {
+ public:
+  // Compiles the shaders; throws std::runtime_error when they do not compile.
+  ParticleRenderer();
+  // Needs the same context current.
+  ~ParticleRenderer();
+  ParticleRenderer(const ParticleRenderer&) = delete;
+  ParticleRenderer& operator=(const ParticleRenderer&) = delete;
+
+  // Uploads positions now; colours follow at the next draw, for its settings.
+  void setParticles(const ParticleFrame& frame);
+  // Clears and draws into the bound framebuffer's (0, 0, width, height).
+  void draw(const OrbitCamera& camera, const DrawSettings& settings, int width, int height);
+
+  std::size_t particleCount() const { return frame_.size(); }
+  // The range the last draw mapped colours over (its settings' or the particles').
+  ValueRange rangeUsed() const { return range_; }
+
+  // The GL buffer of positions, 4 floats per particle (x, y, z, unused), with room for
+  // `capacity` particles: a GPU simulation can write into it through CUDA–OpenGL interop
+  // instead of copying through the host.
+  struct GlBuffer {
+    unsigned name = 0;
+    std::size_t capacity = 0;
+  };
+  GlBuffer positionBuffer() const { return {positionBuffer_, capacity_}; }
+
+ private:
+  struct Programs;
+  void uploadColours(const DrawSettings& settings);
+  void drawParticles(const Mat4f& view, const Mat4f& projection, const DrawSettings& settings,
+                     int height);
+  void drawLines(const std::vector<float>& lines, const Mat4f& viewProjection, const Rgb& colour);
+  void drawColourBar(int width, int height);
+
+  std::unique_ptr<Programs> programs_;
+  unsigned particleVao_ = 0, positionBuffer_ = 0, colourBuffer_ = 0;
+  unsigned lineVao_ = 0, lineBuffer_ = 0;
+  unsigned overlayVao_ = 0, overlayBuffer_ = 0;
+  std::size_t capacity_ = 0;
+  ParticleFrame frame_;
+  ValueRange range_;
+};
+
+// The bound read framebuffer's pixels as RGB bytes, top row first (as images are stored).
+std::vector<std::uint8_t> readRgbPixels(int width, int height);
+
+}  // namespace sph::render

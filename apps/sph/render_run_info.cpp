@@ -1,0 +1,67 @@
+#include "render_run_info.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <string>
+
+#include "sph/error.hpp"
+
+namespace sph::cli {
+
+namespace {
+
+using nlohmann::json;
+
+std::optional<double> number(const json& summary, const char* pointer,
+                             const std::filesystem::path& file) {
+  const json::json_pointer at(pointer);
+  if (!summary.contains(at) || summary.at(at).is_null()) return std::nullopt;
+  const json& value = summary.at(at);
+  if (!value.is_number())
+    throw InputError(file.string() + ": key '" + std::string(pointer).substr(1) +
+                     "' is not a number");
+  return value.get<double>();
+}
+
+std::optional<render::Vec3f> point(const json& summary, const char* pointer,
+                                   const std::filesystem::path& file) {
+  const json::json_pointer at(pointer);
+  if (!summary.contains(at)) return std::nullopt;
+  const json& value = summary.at(at);
+  if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
+      !value[2].is_number())
+    throw InputError(file.string() + ": key '" + std::string(pointer).substr(1) +
+                     "' is not [x, y, z]");
+  return render::Vec3f{value[0].get<float>(), value[1].get<float>(), value[2].get<float>()};
+}
+
+}  // namespace
+
+RenderRunInfo readRenderRunInfo(const std::filesystem::path& dir) {
+  const std::filesystem::path file = dir / "summary.json";
+  RenderRunInfo info;
+  std::ifstream in(file);
+  if (!in) return info;
+  json summary;
+  try {
+    summary = json::parse(in);
+  } catch (const json::exception& e) {
+    throw InputError(file.string() + ": not valid JSON: " + e.what());
+  }
+  if (!summary.is_object()) throw InputError(file.string() + ": expected a JSON object");
+  info.fps = number(summary, "/scene/output/fps", file);
+  if (info.fps && !(*info.fps > 0))
+    throw InputError(file.string() + ": key 'scene/output/fps' must be positive");
+  if (const auto spacing = number(summary, "/scene/fluid/spacing", file)) {
+    info.spacing = static_cast<float>(*spacing);
+    const double ratio = number(summary, "/scene/fluid/support_ratio", file).value_or(2.0);
+    info.supportRadius = static_cast<float>(*spacing * ratio);
+  }
+  const auto min = point(summary, "/scene/domain/min", file);
+  const auto max = point(summary, "/scene/domain/max", file);
+  if (min && max) info.domain = render::Box3f{*min, *max};
+  return info;
+}
+
+}  // namespace sph::cli

@@ -1,0 +1,258 @@
+#include "viewer.hpp"
+
+#include <epoxy/gl.h>
+// GLFW after the GL loader, and without its own GL header.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "camera.hpp"
+#include "colour_map.hpp"
+#include "particle_renderer.hpp"
+#include "png_writer.hpp"
+#include "probe.hpp"
+#include "sph/error.hpp"
+#include "view_panel.hpp"
+#include "viewer_state.hpp"
+
+namespace sph::view {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string glfwError() {
+  const char* description = nullptr;
+  glfwGetError(&description);
+  return description ? description : "unknown error";
+}
+
+struct GlfwSession {
+  GlfwSession() {
+    if (!glfwInit())
+      throw std::runtime_error("sph view: cannot open a window (" + glfwError() +
+                               "); a display is needed: run it on a desktop, or under "
+                               "xvfb-run for a screenshot; `sph render` needs none");
+  }
+  ~GlfwSession() { glfwTerminate(); }
+  GlfwSession(const GlfwSession&) = delete;
+  GlfwSession& operator=(const GlfwSession&) = delete;
+};
+
+// Destroyed after what draws in its context (declared before it).
+struct Window {
+  GLFWwindow* handle;
+  Window(int width, int height, const std::string& title);
+  ~Window() { glfwDestroyWindow(handle); }
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+};
+
+Window::Window(int width, int height, const std::string& title) {
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  handle = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (handle == nullptr)
+    throw std::runtime_error("sph view: cannot open an OpenGL 3.3 core window: " + glfwError());
+  glfwMakeContextCurrent(handle);
+  glfwSwapInterval(1);
+}
+
+struct ImGuiSession {
+  explicit ImGuiSession(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+  }
+  ~ImGuiSession() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  ImGuiSession(const ImGuiSession&) = delete;
+  ImGuiSession& operator=(const ImGuiSession&) = delete;
+};
+
+render::Box3f boxOf(const AxisBox& box) {
+  return {{float(box.min[0]), float(box.min[1]), float(box.min[2])},
+          {float(box.max[0]), float(box.max[1]), float(box.max[2])}};
+}
+
+// Keys act on their press, not while held.
+void handleKeys(ViewerState& state) {
+  if (ImGui::GetIO().WantCaptureKeyboard) return;
+  render::DrawSettings& d = state.draw;
+  if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) state.paused = !state.paused;
+  if (ImGui::IsKeyPressed(GLFW_KEY_N)) state.stepOnce = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) state.resetRequested = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_G, false)) d.showGrid = !d.showGrid;
+  if (ImGui::IsKeyPressed(GLFW_KEY_B, false)) d.show.boundary = !d.show.boundary;
+  if (ImGui::IsKeyPressed(GLFW_KEY_O, false)) d.show.objects = !d.show.objects;
+  if (ImGui::IsKeyPressed(GLFW_KEY_C, false))
+    d.colour = render::ColourMode((int(d.colour) + 1) % 5);
+}
+
+struct Probe {
+  bool present = false;
+  Vec3d start{0, 0, 0};  // its centre in the scene
+  std::size_t object = 0;
+};
+
+// Left drag turns the camera, right drag pans, the wheel zooms; with ctrl, left drag moves the
+// probe in the plane that faces the camera through its centre.
+void handleMouse(render::OrbitCamera& camera, Simulation& sim, const Probe& probe, int width,
+                 int height, ViewerState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureMouse) return;
+  if (io.MouseWheel != 0.0f) camera.distance *= std::pow(0.9f, io.MouseWheel);
+  if (io.MouseDown[0] && io.KeyCtrl && probe.present) {
+    const std::array<double, 3> c = sim.objectStats()[probe.object].centreOfMass;
+    const render::Vec3f centre{float(c[0]), float(c[1]), float(c[2])};
+    const Ray ray = rayThroughPixel(camera, io.MousePos.x, io.MousePos.y, width, height);
+    if (const auto target = dragTarget(camera, ray, centre)) {
+      try {
+        sim.steerObject(kProbeName,
+                        {(*target)[0] - probe.start[0], (*target)[1] - probe.start[1],
+                         (*target)[2] - probe.start[2]},
+                        1.0 / 30.0);
+      } catch (const InputError& e) {
+        state.message = e.what();
+      }
+    }
+    return;
+  }
+  if (io.MouseDown[0]) {
+    camera.yaw -= 0.005f * io.MouseDelta.x;
+    camera.pitch = std::clamp(camera.pitch + 0.005f * io.MouseDelta.y, -1.5f, 1.5f);
+  }
+  if (io.MouseDown[1]) {
+    // Along the screen's right and up at the target's depth.
+    const float scale = 2.0f * camera.distance * std::tan(0.5f * camera.verticalFov) / height;
+    const float cy = std::cos(camera.yaw), sy = std::sin(camera.yaw);
+    const float sp = std::sin(camera.pitch), cp = std::cos(camera.pitch);
+    const render::Vec3f right{cy, 0.0f, -sy};
+    const render::Vec3f up{-sp * sy, cp, -sp * cy};
+    for (int a = 0; a < 3; ++a)
+      camera.target[a] += scale * (-io.MouseDelta.x * right[a] + io.MouseDelta.y * up[a]);
+  }
+}
+
+// Steps toward real time, within a budget of wall time per display frame so the window stays
+// responsive when the simulation cannot keep up.
+void advance(Simulation& sim, ViewerState& state, double wallSeconds) {
+  if (state.paused && !state.stepOnce) return;
+  const double before = sim.time();
+  const auto start = Clock::now();
+  try {
+    if (state.stepOnce) {
+      sim.step();
+      state.paused = true;
+      state.stepOnce = false;
+    } else {
+      const double target = sim.time() + std::min(wallSeconds, 0.05);
+      const auto deadline = start + std::chrono::milliseconds(25);
+      do {
+        sim.step(target);
+        smooth(state.profile, sim.lastProfile(), 0.05);
+      } while (sim.time() < target && Clock::now() < deadline);
+    }
+  } catch (const SimulationFailure& failure) {
+    state.paused = true;
+    state.message = std::string(failure.what()) + " (r resets)";
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+  if (wall > 0.0) {
+    const double factor = (sim.time() - before) / std::max(wall, wallSeconds);
+    state.realTimeFactor += 0.1 * (factor - state.realTimeFactor);
+  }
+}
+
+}  // namespace
+
+void runViewer(const Scene& original, const ViewOptions& options) {
+  const std::optional<render::ColourMode> mode = render::parseColourMode(options.colour);
+  if (!mode)
+    throw InputError("--colour: expected kind, density, pressure, speed or surface, got '" +
+                     options.colour + "'");
+  Scene scene = original;
+  Probe probe;
+  if (options.probe) {
+    probe.present = true;
+    probe.start = addProbe(scene);
+    probe.object = scene.objects.size() - 1;
+  }
+  auto sim = std::make_unique<Simulation>(scene, options.simulation);
+
+  GlfwSession glfw;
+  const Window owned(options.width, options.height, "sph view: " + scene.name);
+  GLFWwindow* window = owned.handle;
+  ImGuiSession imgui(window);
+  render::ParticleRenderer renderer;
+
+  ViewerState state;
+  state.draw.colour = *mode;
+  state.probe = probe.present;
+  state.draw.show.boundary = false;  // walls hide the fluid; b shows them
+  state.draw.particleRadius = float(0.5 * scene.fluid.spacing);
+  state.draw.domain = boxOf(scene.domain.box);
+  state.draw.gridCellSize = float(sim->calibration().supportRadius);
+  state.draw.showDomain = true;
+  render::OrbitCamera camera;
+  camera.frame(state.draw.domain, float(options.width) / float(options.height));
+
+  auto lastFrame = Clock::now();
+  for (int shown = 1; !glfwWindowShouldClose(window); ++shown) {
+    glfwPollEvents();
+    const auto now = Clock::now();
+    const double wallSeconds = std::chrono::duration<double>(now - lastFrame).count();
+    lastFrame = now;
+    if (wallSeconds > 0.0)
+      state.framesPerSecond += 0.1 * (1.0 / wallSeconds - state.framesPerSecond);
+    if (state.resetRequested) {
+      sim = std::make_unique<Simulation>(scene, options.simulation);
+      state.resetRequested = false;
+      state.message.clear();
+    }
+    advance(*sim, state, wallSeconds);
+
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window, &width, &height);
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    handleKeys(state);
+    handleMouse(camera, *sim, probe, width, height, state);
+    if (width > 0 && height > 0) {
+      renderer.setParticles(sim->frame(state.draw.show.boundary));
+      renderer.draw(camera, state.draw, width, height);
+    }
+    drawPanel(*sim, state, renderer.rangeUsed());
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+    if (options.frames > 0 && shown >= options.frames) {
+      if (!options.screenshot.empty())
+        render::writePng(options.screenshot, width, height, render::readRgbPixels(width, height));
+      break;
+    }
+    glfwSwapBuffers(window);
+  }
+}
+
+}  // namespace sph::view

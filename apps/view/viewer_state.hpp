@@ -1,0 +1,29 @@
+// What the viewer's window, panel and keys share between display frames.
+#pragma once
+
+#include <string>
+
+#include "particle_renderer.hpp"
+#include "sph/simulation.hpp"
+
+namespace sph::view {
+
+struct ViewerState {
+  bool paused = false;
+  bool stepOnce = false;        // one step, then paused
+  bool resetRequested = false;  // rebuild the simulation from the scene
+  bool probe = false;           // the scene has the sphere the mouse drags
+  render::DrawSettings draw;
+  std::string message;     // the last error, shown in the panel until the next reset
+  LiveParameters editing;  // the panel's fields while the user edits them
+
+  // Smoothed over the last frames, for steady figures.
+  StepProfile profile;          // ms per step, by stage
+  double realTimeFactor = 0.0;  // simulated seconds per wall second
+  double framesPerSecond = 0.0;
+};
+
+// Exponential smoothing of the figures shown, weight `w` on the newest.
+void smooth(StepProfile& into, const StepProfile& latest, double w);
+
+}  // namespace sph::view

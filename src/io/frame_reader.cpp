@@ -1,0 +1,92 @@
+#include "io/frame_reader.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+#include <utility>
+
+#include "io/frame_reader_support.hpp"
+
+namespace sph::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readBytes(const fs::path& file) {
+  errno = 0;
+  std::ifstream in(file, std::ios::binary);
+  if (!in)
+    throw InputError(file.string() +
+                     ": cannot open: " + (errno != 0 ? std::strerror(errno) : "unknown error"));
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (in.bad()) throw InputError(file.string() + ": read error");
+  return bytes.str();
+}
+
+bool isFrameExtension(const std::string& ext) {
+  return ext == ".vtp" || ext == ".ply" || ext == ".csv";
+}
+
+// "frame_00012.vtp" → 12; -1 for any other name (temporaries, stray files).
+long frameNumber(const fs::path& file) {
+  const std::string stem = file.stem().string();
+  const std::string prefix = "frame_";
+  if (stem.size() <= prefix.size() || stem.compare(0, prefix.size(), prefix) != 0) return -1;
+  const std::string digits = stem.substr(prefix.size());
+  if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return -1;
+  return std::stol(digits);
+}
+
+}  // namespace
+
+ParticleFrame readFrame(const fs::path& file) {
+  const std::string ext = file.extension().string();
+  if (!isFrameExtension(ext))
+    throwBadFrame(file, "unknown frame format '" + ext + "', expected .vtp, .ply or .csv");
+  const std::string bytes = readBytes(file);
+  if (ext == ".vtp") return readVtp(bytes, file);
+  if (ext == ".ply") return readPly(bytes, file);
+  return readCsvFrame(bytes, file);
+}
+
+RunFrameFiles listRunFrames(const fs::path& dir) {
+  std::error_code error;
+  if (!fs::is_directory(dir, error)) throw InputError(dir.string() + ": not a directory");
+  const fs::path framesDir = dir / "frames";
+  if (!fs::is_directory(framesDir, error))
+    throw InputError(framesDir.string() +
+                     ": not found; expected the frames of a run (sph run --out DIR)");
+
+  std::vector<std::pair<long, fs::path>> numbered;
+  std::string extension;
+  for (const fs::directory_entry& entry : fs::directory_iterator(framesDir, error)) {
+    const fs::path& path = entry.path();
+    const long number = frameNumber(path);
+    if (number < 0 || !isFrameExtension(path.extension().string())) continue;
+    if (extension.empty()) extension = path.extension().string();
+    if (path.extension() != extension)
+      throw InputError(framesDir.string() + ": holds frames of two formats (" + extension +
+                       " and " + path.extension().string() + "); expected one");
+    numbered.emplace_back(number, path);
+  }
+  if (error) throw InputError(framesDir.string() + ": cannot list: " + error.message());
+  if (numbered.empty())
+    throw InputError(framesDir.string() +
+                     ": holds no frame_NNNNN.vtp, .ply or .csv files (was the run's format "
+                     "'none'?)");
+  std::sort(numbered.begin(), numbered.end());
+
+  RunFrameFiles files;
+  for (auto& [number, path] : numbered) files.frames.push_back(std::move(path));
+  const fs::path boundary = dir / ("boundary" + extension);
+  if (fs::is_regular_file(boundary, error)) files.boundary = boundary;
+  return files;
+}
+
+}  // namespace sph::io

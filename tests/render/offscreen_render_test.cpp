@@ -1,0 +1,180 @@
+// Renders known frames offscreen and checks the pixels: particles where they are, background
+// where none are. Skipped, with the reason, where no offscreen context can be made.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "camera.hpp"
+#include "offscreen_context.hpp"
+#include "particle_renderer.hpp"
+
+namespace sph::render {
+namespace {
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 120;
+
+struct Pixel {
+  int r, g, b;
+};
+
+class OffscreenRender : public testing::Test {
+ protected:
+  void SetUp() override {
+    try {
+      context_ = std::make_unique<OffscreenContext>(kWidth, kHeight);
+    } catch (const ContextUnavailable& e) {
+      GTEST_SKIP() << "no offscreen OpenGL context: " << e.what();
+    }
+    renderer_ = std::make_unique<ParticleRenderer>();
+    // Looking along -z at the unit cube: x to the right, y up.
+    camera_.target = {0.5f, 0.5f, 0.5f};
+    camera_.distance = 2.6f;
+    camera_.yaw = 0.0f;
+    camera_.pitch = 0.0f;
+    settings_.particleRadius = 0.03f;
+    settings_.domain = {{0, 0, 0}, {1, 1, 1}};
+  }
+  void TearDown() override {
+    renderer_.reset();  // while its context is current
+    context_.reset();
+  }
+
+  std::vector<std::uint8_t> render(const ParticleFrame& frame) {
+    renderer_->setParticles(frame);
+    context_->bindForDrawing();
+    renderer_->draw(camera_, settings_, kWidth, kHeight);
+    context_->resolveForReading();
+    return readRgbPixels(kWidth, kHeight);
+  }
+
+  // The pixel where the world point p appears (image rows from the top).
+  Pixel pixelAt(const std::vector<std::uint8_t>& rgb, const Vec3f& p) const {
+    const auto clip =
+        transformPoint(multiply(camera_.projection(float(kWidth) / kHeight), camera_.view()), p);
+    const int x = static_cast<int>((clip[0] / clip[3] * 0.5f + 0.5f) * kWidth);
+    const int y = static_cast<int>((0.5f - clip[1] / clip[3] * 0.5f) * kHeight);
+    const std::size_t at = 3 * (static_cast<std::size_t>(y) * kWidth + x);
+    return {rgb[at], rgb[at + 1], rgb[at + 2]};
+  }
+
+  bool isBackground(const Pixel& p) const {
+    const Rgb& b = settings_.background;
+    return p.r == toByte(b.r) && p.g == toByte(b.g) && p.b == toByte(b.b);
+  }
+
+  std::unique_ptr<OffscreenContext> context_;
+  std::unique_ptr<ParticleRenderer> renderer_;
+  OrbitCamera camera_;
+  DrawSettings settings_;
+};
+
+void addParticle(ParticleFrame& f, const Vec3f& p, ParticleKind kind, int object) {
+  f.id.push_back(static_cast<std::uint32_t>(f.id.size()));
+  f.position.insert(f.position.end(), p.begin(), p.end());
+  f.velocity.insert(f.velocity.end(), {0.0f, 0.0f, 0.0f});
+  f.density.push_back(1000.0f);
+  f.pressure.push_back(0.0f);
+  f.kind.push_back(static_cast<std::uint8_t>(kind));
+  f.object.push_back(object);
+  f.surface.push_back(0);
+}
+
+// A block of fluid in the left half (x < 0.45) and a column of object particles at x = 0.8
+// in the lower half.
+ParticleFrame knownScene() {
+  ParticleFrame f;
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 14; ++j)
+      for (int k = 0; k < 7; ++k)
+        addParticle(f, {0.1f + 0.05f * i, 0.1f + 0.05f * j, 0.3f + 0.05f * k}, ParticleKind::Fluid,
+                    -1);
+  for (int j = 0; j < 6; ++j)
+    addParticle(f, {0.8f, 0.1f + 0.05f * j, 0.5f}, ParticleKind::Object, 0);
+  return f;
+}
+
+TEST_F(OffscreenRender, ParticlesWhereTheyAreBackgroundElsewhere) {
+  const std::vector<std::uint8_t> rgb = render(knownScene());
+  ASSERT_EQ(rgb.size(), std::size_t(3) * kWidth * kHeight);
+
+  // Fluid: water blue in the middle of the block's face.
+  const Pixel fluid = pixelAt(rgb, {0.25f, 0.45f, 0.6f});
+  EXPECT_FALSE(isBackground(fluid));
+  EXPECT_GT(fluid.b, fluid.r + 40) << fluid.r << "," << fluid.g << "," << fluid.b;
+  // The object: its palette colour (red-dominant for object 0), below the middle on the right.
+  const Pixel object = pixelAt(rgb, {0.8f, 0.2f, 0.5f});
+  EXPECT_FALSE(isBackground(object));
+  EXPECT_GT(object.r, object.b + 40) << object.r << "," << object.g << "," << object.b;
+  // Nothing in the upper right or between the two.
+  EXPECT_TRUE(isBackground(pixelAt(rgb, {0.8f, 0.85f, 0.5f})));
+  EXPECT_TRUE(isBackground(pixelAt(rgb, {0.62f, 0.5f, 0.5f})));
+
+  // The picture as a whole: a fair share covered, most of it not (an empty, black or uniform
+  // image fails here).
+  std::size_t covered = 0, left = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const std::size_t at = 3 * (std::size_t(y) * kWidth + x);
+      if (!isBackground({rgb[at], rgb[at + 1], rgb[at + 2]})) {
+        ++covered;
+        if (x < kWidth / 2) ++left;
+      }
+    }
+  EXPECT_GT(covered, std::size_t(kWidth * kHeight) / 20);
+  EXPECT_LT(covered, std::size_t(kWidth * kHeight) / 2);
+  EXPECT_GT(left, covered * 8 / 10) << "the fluid block is on the left";
+}
+
+TEST_F(OffscreenRender, EmptyFrameIsAllBackground) {
+  const std::vector<std::uint8_t> rgb = render(ParticleFrame{});
+  for (std::size_t at = 0; at < rgb.size(); at += 3)
+    ASSERT_TRUE(isBackground({rgb[at], rgb[at + 1], rgb[at + 2]})) << "pixel " << at / 3;
+}
+
+TEST_F(OffscreenRender, NearerSphereHidesTheOneBehind) {
+  ParticleFrame f;
+  addParticle(f, {0.5f, 0.5f, 0.9f}, ParticleKind::Object, 0);  // nearer the eye (at z = 3.1)
+  addParticle(f, {0.5f, 0.5f, 0.1f}, ParticleKind::Fluid, -1);  // drawn after, behind it
+  settings_.particleRadius = 0.08f;
+  const Pixel centre = pixelAt(render(f), {0.5f, 0.5f, 0.9f});
+  EXPECT_GT(centre.r, centre.b) << "the object in front, not the fluid behind";
+}
+
+TEST_F(OffscreenRender, HiddenKindsAreNotDrawn) {
+  settings_.show.fluid = false;
+  const std::vector<std::uint8_t> rgb = render(knownScene());
+  EXPECT_TRUE(isBackground(pixelAt(rgb, {0.25f, 0.45f, 0.6f})));
+  EXPECT_FALSE(isBackground(pixelAt(rgb, {0.8f, 0.2f, 0.5f})));
+}
+
+TEST_F(OffscreenRender, ColourBarShowsTheMapForQuantities) {
+  settings_.colour = ColourMode::Density;
+  settings_.range = ValueRange{990.0f, 1010.0f};
+  const std::vector<std::uint8_t> rgb = render(ParticleFrame{});
+  // The strip's right edge is at 0.9 in device coordinates, 18 pixels wide, from -0.6 to 0.6.
+  const int x = static_cast<int>((0.9f * 0.5f + 0.5f) * kWidth) - 5;
+  auto at = [&](float ndcY) {
+    const int y = static_cast<int>((0.5f - 0.5f * ndcY) * kHeight);
+    const std::size_t i = 3 * (std::size_t(y) * kWidth + x);
+    return Pixel{rgb[i], rgb[i + 1], rgb[i + 2]};
+  };
+  const Pixel top = at(0.55f), bottom = at(-0.55f);
+  EXPECT_GT(top.r + top.g, 350) << "yellow at the top";
+  EXPECT_GT(bottom.b, bottom.g + 30) << "violet at the bottom";
+}
+
+TEST_F(OffscreenRender, PositionBufferHoldsFourFloatsPerParticle) {
+  const ParticleFrame frame = knownScene();
+  renderer_->setParticles(frame);
+  const auto buffer = renderer_->positionBuffer();
+  EXPECT_NE(buffer.name, 0u);
+  EXPECT_EQ(buffer.capacity, frame.size());
+  renderer_->setParticles(ParticleFrame{});  // shrinking keeps the buffer
+  EXPECT_EQ(renderer_->positionBuffer().capacity, frame.size());
+}
+
+}  // namespace
+}  // namespace sph::render
