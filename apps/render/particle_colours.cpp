@@ -73,7 +73,12 @@ Rgb particleColour(const ParticleFrame& frame, std::size_t i, ColourMode mode, V
 }
 
 bool particleShown(const ParticleFrame& frame, std::size_t i, const ParticleFilter& filter) {
-  switch (static_cast<ParticleKind>(frame.kind[i])) {
+  const auto kind = static_cast<ParticleKind>(frame.kind[i]);
+  if (filter.cut && kind != ParticleKind::Fluid) {
+    const Vec3f p{frame.position[3 * i], frame.position[3 * i + 1], frame.position[3 * i + 2]};
+    if (dot(subtract(p, filter.cut->point), filter.cut->normal) < 0.0f) return false;
+  }
+  switch (kind) {
     case ParticleKind::Fluid:
       return filter.fluid;
     case ParticleKind::Boundary:

@@ -6,15 +6,24 @@
 #include <optional>
 #include <vector>
 
+#include "camera.hpp"
 #include "colour_map.hpp"
 #include "sph/frame.hpp"
 
 namespace sph::render {
 
+// Walls and objects on the near side of a plane are left out, to show the fluid they hide
+// (the blood inside a vessel).
+struct CutPlane {
+  Vec3f point{0, 0, 0};
+  Vec3f normal{0, 0, 1};  // toward the side kept
+};
+
 struct ParticleFilter {
   bool fluid = true;
   bool boundary = true;  // walls
   bool objects = true;
+  std::optional<CutPlane> cut;  // never cuts the fluid
 };
 
 // The quantity shown for particle i: density (kg/m³), pressure (Pa) or speed (m/s); 0 for modes

@@ -84,10 +84,12 @@ void ParticleRenderer::setParticles(const ParticleFrame& frame) {
   }
 }
 
-void ParticleRenderer::uploadColours(const DrawSettings& settings) {
+void ParticleRenderer::uploadColours(const DrawSettings& settings, const OrbitCamera& camera) {
   range_ = settings.range ? *settings.range : rangeFromFrames({&frame_}, settings.colour);
-  const std::vector<std::uint8_t> rgba =
-      particleColours(frame_, settings.colour, range_, settings.show);
+  ParticleFilter show = settings.show;
+  if (settings.cutaway)
+    show.cut = CutPlane{camera.target, normalize(subtract(camera.target, camera.eye()))};
+  const std::vector<std::uint8_t> rgba = particleColours(frame_, settings.colour, range_, show);
   glBindBuffer(GL_ARRAY_BUFFER, colourBuffer_);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(rgba.size()), rgba.data(), GL_DYNAMIC_DRAW);
 }
@@ -111,7 +113,7 @@ void ParticleRenderer::draw(const OrbitCamera& camera, const DrawSettings& setti
   if (settings.showDomain || settings.showGrid)
     drawLines(boxEdges(settings.domain), viewProjection, lineColour(settings.background, 0.35f));
   if (!frame_.id.empty()) {
-    uploadColours(settings);
+    uploadColours(settings, camera);
     drawParticles(view, projection, settings, height);
   }
   if (settings.showColourBar && usesRange(settings.colour)) drawColourBar(width, height);

@@ -26,6 +26,9 @@ struct DrawSettings {
   Box3f domain;
   float gridCellSize = 0.0f;  // the support radius h
   bool showColourBar = true;  // for the modes that map a quantity
+  // Leave out the walls and objects between the camera and its target (the plane through the
+  // target facing the camera), so the fluid inside a vessel shows.
+  bool cutaway = false;
   Rgb background{0.11f, 0.12f, 0.14f};
 };
 
@@ -58,7 +61,7 @@ class ParticleRenderer {
 
  private:
   struct Programs;
-  void uploadColours(const DrawSettings& settings);
+  void uploadColours(const DrawSettings& settings, const OrbitCamera& camera);
   void drawParticles(const Mat4f& view, const Mat4f& projection, const DrawSettings& settings,
                      int height);
   void drawLines(const std::vector<float>& lines, const Mat4f& viewProjection, const Rgb& colour);

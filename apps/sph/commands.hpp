@@ -33,6 +33,7 @@ struct RenderOptions {
   double fps = 0.0;  // 0: the run's frame rate (summary.json), else 30
   bool noVideo = false;
   bool boundary = false;  // show the walls
+  bool cutaway = false;   // leave out the walls and objects in front of the camera's target
   bool grid = false;      // show the domain and the uniform grid's cells
   bool quiet = false;
 };

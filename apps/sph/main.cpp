@@ -63,6 +63,9 @@ int main(int argc, char** argv) {
   renderCmd->add_flag("--no-video", render.noVideo, "Images only");
   renderCmd->add_flag("--boundary", render.boundary, "Show the walls (DIR/boundary.EXT)");
   renderCmd->add_flag("--grid", render.grid, "Show the domain box and the uniform grid's cells");
+  renderCmd->add_flag("--cutaway", render.cutaway,
+                      "Leave out the objects and walls in front of the view's centre, to show "
+                      "the fluid inside them");
   renderCmd->add_flag("--quiet", render.quiet, "No progress output");
 
   ViewCommandOptions view;

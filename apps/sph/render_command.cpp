@@ -139,6 +139,7 @@ Scene prepareScene(const RenderOptions& options, const io::RunFrameFiles& files,
   if (isEmpty(particles)) particles = info.domain.value_or(Box3f{{0, 0, 0}, {1, 1, 1}});
   settings.domain = info.domain.value_or(particles);
   settings.showGrid = options.grid;
+  settings.cutaway = options.cutaway;
   settings.showDomain = options.grid;
   settings.gridCellSize = info.supportRadius.value_or(4.0f * settings.particleRadius);
   // Framed on the particles (and the domain when its grid is shown), not on the domain alone: a

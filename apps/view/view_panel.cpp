@@ -90,6 +90,8 @@ void drawSettings(ViewerState& state, const render::ValueRange& range) {
   ImGui::Checkbox("walls (b)", &d.show.boundary);
   ImGui::SameLine();
   ImGui::Checkbox("objects (o)", &d.show.objects);
+  ImGui::Checkbox("cut away (x)", &d.cutaway);
+  ImGui::SameLine();
   ImGui::Checkbox("grid (g)", &d.showGrid);
   ImGui::SameLine();
   ImGui::Checkbox("domain", &d.showDomain);

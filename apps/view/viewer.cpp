@@ -102,6 +102,7 @@ void handleKeys(ViewerState& state) {
   if (ImGui::IsKeyPressed(GLFW_KEY_N)) state.stepOnce = true;
   if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) state.resetRequested = true;
   if (ImGui::IsKeyPressed(GLFW_KEY_G, false)) d.showGrid = !d.showGrid;
+  if (ImGui::IsKeyPressed(GLFW_KEY_X, false)) d.cutaway = !d.cutaway;
   if (ImGui::IsKeyPressed(GLFW_KEY_B, false)) d.show.boundary = !d.show.boundary;
   if (ImGui::IsKeyPressed(GLFW_KEY_O, false)) d.show.objects = !d.show.objects;
   if (ImGui::IsKeyPressed(GLFW_KEY_C, false))

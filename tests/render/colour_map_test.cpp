@@ -106,6 +106,19 @@ TEST(ColourMap, HiddenParticlesHaveZeroAlpha) {
   EXPECT_EQ((Bytes{rgba[8], rgba[9], rgba[10]}), bytes(kindColour(ParticleKind::Object, 4)));
 }
 
+TEST(ColourMap, ACutPlaneHidesObjectsAndWallsInFrontButNeverTheFluid) {
+  ParticleFrame frame = fluidWithDensities({1000.0f, 1000.0f, 1000.0f, 1000.0f});
+  frame.kind = {2, 2, 1, 0};
+  frame.object = {0, 0, -1, -1};
+  frame.position = {0, 0, 1, 0, 0, -1, 0, 0, 2, 0, 0, 3};  // z = 1, -1, 2, 3
+  ParticleFilter filter;
+  filter.cut = CutPlane{{0, 0, 0}, {0, 0, -1}};  // keeps z < 0: the camera looks along -z
+  EXPECT_FALSE(particleShown(frame, 0, filter));  // object in front
+  EXPECT_TRUE(particleShown(frame, 1, filter));   // object behind
+  EXPECT_FALSE(particleShown(frame, 2, filter));  // wall in front
+  EXPECT_TRUE(particleShown(frame, 3, filter));   // fluid, in front, still shown
+}
+
 TEST(ColourMap, DensityRangeIsCentredOnTheMedian) {
   std::vector<float> densities;
   for (int i = 0; i <= 100; ++i) densities.push_back(1000.0f + 0.1f * static_cast<float>(i - 50));
