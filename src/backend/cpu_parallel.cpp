@@ -1,6 +1,7 @@
 #include "backend/cpu_parallel.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace sph::backend {
 
@@ -10,6 +11,27 @@ int threadCount() {
 #else
   return 1;
 #endif
+}
+
+namespace {
+bool batched = true;
+}  // namespace
+
+void requireCompiledInstructionSet() {
+#if defined(__x86_64__) && defined(__AVX2__) && defined(__FMA__)
+  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma"))
+    throw std::runtime_error(
+        "this sph was compiled for AVX2 and FMA (SPH_CPU_ARCH=x86-64-v3), which this CPU "
+        "lacks: rebuild with -DSPH_CPU_ARCH= (the compiler's default)");
+#endif
+}
+
+bool batchedPasses() {
+  return batched;
+}
+
+void setBatchedPasses(bool on) {
+  batched = on;
 }
 
 void setThreadCount(int n) {

@@ -2,6 +2,7 @@
 // Writes density, pressure, pressureState and the neighbour lists.
 #pragma once
 
+#include "fluid/density_pressure_batched.hpp"
 #include "fluid/kernel_dispatch.hpp"
 #include "fluid/neighbors.hpp"
 #include "fluid/parameters.hpp"
@@ -70,6 +71,14 @@ void computeDensityAndPressure(FluidParticles<B>& fluid, const Grid<B>& grid,
                                const BoundaryParticles<B>& boundary,
                                const FluidParameters& params) {
   withKernels(params, [&](auto kernels) {
+#if !defined(__CUDACC__)
+    if constexpr (B::kBatches) {
+      if (backend::batchedPasses()) {
+        detail::densityPassBatched(fluid, grid, boundary, params, kernels);
+        return;
+      }
+    }
+#endif
     detail::densityPass<B>(fluid, grid, boundary, params, kernels);
   });
 }

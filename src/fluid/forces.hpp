@@ -3,6 +3,7 @@
 // lists, the walls and externalById. Writes acceleration (w: |∇c|).
 #pragma once
 
+#include "fluid/forces_batched.hpp"
 #include "fluid/kernel_dispatch.hpp"
 #include "fluid/neighbors.hpp"
 #include "fluid/parameters.hpp"
@@ -124,8 +125,17 @@ void forcePass(FluidParticles<B>& fluid, const Grid<B>& grid, const BoundaryPart
 template <class B, class Options>
 void forcePassWithKernels(FluidParticles<B>& fluid, const Grid<B>& grid,
                           const BoundaryParticles<B>& boundary, const FluidParameters& params) {
-  withKernels(params,
-              [&](auto kernels) { forcePass<B, Options>(fluid, grid, boundary, params, kernels); });
+  withKernels(params, [&](auto kernels) {
+#if !defined(__CUDACC__)
+    if constexpr (B::kBatches) {
+      if (backend::batchedPasses()) {
+        forcePassBatched<Options>(fluid, grid, boundary, params, kernels);
+        return;
+      }
+    }
+#endif
+    forcePass<B, Options>(fluid, grid, boundary, params, kernels);
+  });
 }
 
 template <class B, PressureForm kForm, ViscosityModel kViscosity>

@@ -11,6 +11,9 @@
 namespace sph::fluid {
 
 constexpr std::uint32_t kNeighborOverflow = 0xffffffffu;
+// Padding of the arrays the CPU's SIMD passes load a batch at a time: the widest batch (16
+// floats, AVX-512).
+constexpr std::size_t kBatchPadding = 16;
 
 // Fluid particles, reordered by cell every step so neighbour loops read memory in order.
 template <class B>
@@ -42,6 +45,12 @@ struct FluidParticles {
   Buffer<std::uint32_t> order;
   Buffer<Vec4> scratch4;
   Buffer<std::uint32_t> scratchId;
+  // The CPU's SIMD passes: positions as three arrays, padded so that a batch load anywhere in
+  // range stays inside (n + kBatchPadding). Empty on the GPU.
+  Buffer<float> batchX, batchY, batchZ;
+  Buffer<float> batchVX, batchVY, batchVZ;
+  // pressureState split: p/ρ², 1/ρ, p, ρ (written by the density pass)
+  Buffer<float> batchPOverRho2, batchInverseDensity, batchPressure, batchDensity;
 };
 
 // Static wall particles (Akinci et al. 2012), sorted by cell of their own grid once at set-up.
@@ -54,6 +63,9 @@ struct BoundaryParticles {
   Buffer<Vec4> position;            // xyz; w = volume ψ_b, m³
   Buffer<std::uint32_t> id;         // stable particle id
   Buffer<std::uint32_t> cellStart;  // cellCount + 1
+  // The CPU's SIMD passes: position and volume as four padded arrays (see FluidParticles),
+  // made once by prepareBoundary. Empty on the GPU.
+  Buffer<float> batchX, batchY, batchZ, batchVolume;
 };
 
 // The uniform grid over the fluid, rebuilt each step over the particles' bounding box (so an

@@ -46,6 +46,20 @@ void prepareBoundary(BoundaryParticles<B>& boundary, const std::vector<Vec3>& po
   B::upload(boundary.position, position.data(), n);
   B::upload(boundary.id, id.data(), n);
   B::upload(boundary.cellStart, cellStart.data(), cellStart.size());
+  if constexpr (B::kBatches) {
+    // Far away, with no volume: the padding never passes a distance test.
+    std::vector<float> x(n + kBatchPadding, 1e30f), y(x), z(x), v(n + kBatchPadding, 0.0f);
+    for (std::size_t k = 0; k < n; ++k) {
+      x[k] = position[k].x;
+      y[k] = position[k].y;
+      z[k] = position[k].z;
+      v[k] = position[k].w;
+    }
+    B::upload(boundary.batchX, x.data(), x.size());
+    B::upload(boundary.batchY, y.data(), y.size());
+    B::upload(boundary.batchZ, z.data(), z.size());
+    B::upload(boundary.batchVolume, v.data(), v.size());
+  }
 }
 
 }  // namespace sph::fluid

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "backend/cpu_parallel.hpp"
 #include "sim/calibration.hpp"
 #include "sim/fluid_engine.hpp"
 #include "sim/object_clearance.hpp"
@@ -57,6 +58,7 @@ struct Simulation::Impl {
   std::vector<Vec3> fluidForceOnObject;  // by object, last step
 
   Impl(const Scene& s, const SimulationOptions& options) : scene(s) {
+    backend::requireCompiledInstructionSet();
     calibration = sim::calibrate(scene);
     params = sim::fluidParameters(scene, calibration);
     dt = calibration.initialDt;

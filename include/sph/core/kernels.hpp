@@ -8,6 +8,7 @@
 // Coefficients are computed once on the host (`make`) and passed by value to the device.
 #pragma once
 
+#include "sph/core/select.hpp"
 #include "sph/core/vec.hpp"
 
 namespace sph {
@@ -28,15 +29,18 @@ struct MullerKernels {
     return {Real(h), Real(h * h), Real(315.0 / (64.0 * kPi * h9)), Real(-45.0 / (kPi * h6)),
             Real(45.0 / (kPi * h6))};
   }
-  SPH_HD Real W(Real r2) const {
-    if (r2 >= h2) return Real(0);
-    const Real d = h2 - r2;
-    return poly6 * d * d * d;
+  // W is generic over the argument (a float, or a SIMD batch: see select.hpp).
+  template <class T = Real>
+  SPH_HD T W(T r2) const {
+    const T d = T(h2) - r2;
+    return select(r2 < T(h2), T(poly6) * d * d * d, T(0));
   }
-  SPH_HD Real gradFactor(Real r) const {
-    if (r >= h || r <= Real(0)) return Real(0);
-    const Real d = h - r;
-    return spikyGradient * d * d / r;
+  // The factors below are generic over the argument too; zero outside the support.
+  template <class T = Real>
+  SPH_HD T gradFactor(T r) const {
+    const T d = T(h) - r;
+    const auto inside = r < T(h) && r > T(0);
+    return select(inside, T(spikyGradient) * d * d / select(inside, r, T(1)), T(0));
   }
   // The kernels whose gradient and Laplacian the passes use, for checks and plots.
   SPH_HD Real spiky(Real r) const {
@@ -49,14 +53,19 @@ struct MullerKernels {
     return viscosityLap * h * h * h / Real(6) *
            (-q * q * q / Real(2) + q * q + Real(1) / (Real(2) * q) - Real(1));
   }
-  SPH_HD Real laplacian(Real r) const { return r >= h ? Real(0) : viscosityLap * (h - r); }
-  SPH_HD Real colourGradFactor(Real r) const {
-    const Real d = h2 - r * r;
-    return r >= h ? Real(0) : Real(-6) * poly6 * d * d;
+  template <class T = Real>
+  SPH_HD T laplacian(T r) const {
+    return select(r < T(h), T(viscosityLap) * (T(h) - r), T(0));
   }
-  SPH_HD Real colourLaplacian(Real r) const {
-    const Real r2 = r * r;
-    return r >= h ? Real(0) : Real(-6) * poly6 * (h2 - r2) * (Real(3) * h2 - Real(7) * r2);
+  template <class T = Real>
+  SPH_HD T colourGradFactor(T r) const {
+    const T d = T(h2) - r * r;
+    return select(r < T(h), T(-6) * T(poly6) * d * d, T(0));
+  }
+  template <class T = Real>
+  SPH_HD T colourLaplacian(T r) const {
+    const T r2 = r * r;
+    return select(r < T(h), T(-6) * T(poly6) * (T(h2) - r2) * (T(3) * T(h2) - T(7) * r2), T(0));
   }
 };
 
@@ -68,36 +77,47 @@ struct CubicSplineKernels {
   static CubicSplineKernels make(double h) {
     return {Real(h), Real(h * h), Real(1.0 / h), Real(8.0 / (kPi * h * h * h))};
   }
-  SPH_HD Real W(Real r2) const {
-    if (r2 >= h2) return Real(0);
-    const Real q = realSqrt(r2) * invH;
-    if (q <= Real(0.5)) return sigma * (Real(6) * q * q * (q - Real(1)) + Real(1));
-    const Real d = Real(1) - q;
-    return sigma * Real(2) * d * d * d;
+  template <class T = Real>
+  SPH_HD T W(T r2) const {
+    const T q = realSqrt(r2) * T(invH);
+    const T d = T(1) - q;
+    const T w = select(q <= T(0.5f), T(sigma) * (T(6) * q * q * (q - T(1)) + T(1)),
+                       T(sigma) * T(2) * d * d * d);
+    return select(r2 < T(h2), w, T(0));
   }
   // dW/dr
-  SPH_HD Real derivative(Real r) const {
-    const Real q = r * invH;
-    if (q >= Real(1)) return Real(0);
-    if (q <= Real(0.5)) return sigma * invH * q * (Real(18) * q - Real(12));
-    const Real d = Real(1) - q;
-    return Real(-6) * sigma * invH * d * d;
+  template <class T = Real>
+  SPH_HD T derivative(T r) const {
+    const T q = r * T(invH);
+    const T d = T(1) - q;
+    const T inner = T(sigma) * T(invH) * q * (T(18) * q - T(12));
+    const T outer = T(-6) * T(sigma) * T(invH) * d * d;
+    return select(q < T(1), select(q <= T(0.5f), inner, outer), T(0));
   }
-  SPH_HD Real gradFactor(Real r) const { return r <= Real(0) ? Real(0) : derivative(r) / r; }
+  // W'(r)/r; zero at r = 0, where a particle meets itself.
+  template <class T = Real>
+  SPH_HD T gradFactor(T r) const {
+    return select(r > T(0), derivative(r) / select(r > T(0), r, T(1)), T(0));
+  }
   // Brookshaw's approximation -2 W'(r)/r: positive, so viscosity only dissipates.
-  SPH_HD Real laplacian(Real r) const {
-    const Real q = r * invH;
-    if (q >= Real(1)) return Real(0);
-    if (q <= Real(0.5)) return Real(-2) * sigma * invH * invH * (Real(18) * q - Real(12));
-    return r <= Real(0) ? Real(0) : Real(-2) * derivative(r) / r;
+  template <class T = Real>
+  SPH_HD T laplacian(T r) const {
+    const T q = r * T(invH);
+    const T inner = T(-2) * T(sigma) * T(invH) * T(invH) * (T(18) * q - T(12));
+    return select(q <= T(0.5f), select(q < T(1), inner, T(0)), T(-2) * gradFactor(r));
   }
-  SPH_HD Real colourGradFactor(Real r) const { return gradFactor(r); }
+  template <class T = Real>
+  SPH_HD T colourGradFactor(T r) const {
+    return gradFactor(r);
+  }
   // W'' + 2 W'/r
-  SPH_HD Real colourLaplacian(Real r) const {
-    const Real q = r * invH;
-    if (q >= Real(1)) return Real(0);
-    if (q <= Real(0.5)) return sigma * invH * invH * (Real(72) * q - Real(36));
-    return sigma * invH * invH * (Real(1) - q) * (Real(12) - Real(12) * (Real(1) - q) / q);
+  template <class T = Real>
+  SPH_HD T colourLaplacian(T r) const {
+    const T q = r * T(invH);
+    const T c = T(sigma) * T(invH) * T(invH);
+    const T inner = c * (T(72) * q - T(36));
+    const T outer = c * (T(1) - q) * (T(12) - T(12) * (T(1) - q) / select(q > T(0), q, T(1)));
+    return select(q < T(1), select(q <= T(0.5f), inner, outer), T(0));
   }
 };
 
@@ -109,28 +129,35 @@ struct WendlandC2Kernels {
   static WendlandC2Kernels make(double h) {
     return {Real(h), Real(h * h), Real(1.0 / h), Real(21.0 / (2.0 * kPi * h * h * h))};
   }
-  SPH_HD Real W(Real r2) const {
-    if (r2 >= h2) return Real(0);
-    const Real q = realSqrt(r2) * invH;
-    const Real d = Real(1) - q;
-    const Real d2 = d * d;
-    return sigma * d2 * d2 * (Real(1) + Real(4) * q);
+  template <class T = Real>
+  SPH_HD T W(T r2) const {
+    const T q = realSqrt(r2) * T(invH);
+    const T d = T(1) - q;
+    const T d2 = d * d;
+    return select(r2 < T(h2), T(sigma) * d2 * d2 * (T(1) + T(4) * q), T(0));
   }
   // dW/dr / r = -20 σ (1-q)³ / h²: finite at r = 0.
-  SPH_HD Real gradFactor(Real r) const {
-    const Real q = r * invH;
-    if (q >= Real(1)) return Real(0);
-    const Real d = Real(1) - q;
-    return Real(-20) * sigma * invH * invH * d * d * d;
+  template <class T = Real>
+  SPH_HD T gradFactor(T r) const {
+    const T q = r * T(invH);
+    const T d = T(1) - q;
+    return select(q < T(1), T(-20) * T(sigma) * T(invH) * T(invH) * d * d * d, T(0));
   }
-  SPH_HD Real laplacian(Real r) const { return Real(-2) * gradFactor(r); }
-  SPH_HD Real colourGradFactor(Real r) const { return gradFactor(r); }
+  template <class T = Real>
+  SPH_HD T laplacian(T r) const {
+    return T(-2) * gradFactor(r);
+  }
+  template <class T = Real>
+  SPH_HD T colourGradFactor(T r) const {
+    return gradFactor(r);
+  }
   // W'' + 2 W'/r = -20 σ (1-q)² (3 - 6q) / h²
-  SPH_HD Real colourLaplacian(Real r) const {
-    const Real q = r * invH;
-    if (q >= Real(1)) return Real(0);
-    const Real d = Real(1) - q;
-    return Real(-20) * sigma * invH * invH * d * d * (Real(3) - Real(6) * q);
+  template <class T = Real>
+  SPH_HD T colourLaplacian(T r) const {
+    const T q = r * T(invH);
+    const T d = T(1) - q;
+    return select(q < T(1), T(-20) * T(sigma) * T(invH) * T(invH) * d * d * (T(3) - T(6) * q),
+                  T(0));
   }
 };
 

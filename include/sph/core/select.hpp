@@ -1,0 +1,75 @@
+// What lets a formula be written once for one float (the GPU, and scalar CPU code) and for a
+// batch of floats (the CPU's SIMD passes, std::experimental::simd): a comparison gives a bool
+// or a mask, select() picks by it, and realSqrt() takes either. Formulas use no branches on
+// values, so both compile from the same source (DESIGN.md: core generic over the arithmetic).
+#pragma once
+
+#include "sph/core/vec.hpp"
+
+#if !defined(__CUDACC__)
+#include <experimental/simd>
+#endif
+
+namespace sph {
+
+SPH_HD float select(bool condition, float ifTrue, float ifFalse) {
+  return condition ? ifTrue : ifFalse;
+}
+SPH_HD double select(bool condition, double ifTrue, double ifFalse) {
+  return condition ? ifTrue : ifFalse;
+}
+
+#if !defined(__CUDACC__)
+namespace stdx = std::experimental;
+
+// The CPU's batch: as many floats as the build's vector registers hold (8 with AVX2).
+using FloatBatch = stdx::native_simd<float>;
+
+template <class T, class Abi>
+stdx::simd<T, Abi> select(const stdx::simd_mask<T, Abi>& condition, stdx::simd<T, Abi> ifTrue,
+                          const stdx::simd<T, Abi>& ifFalse) {
+  stdx::where(!condition, ifTrue) = ifFalse;
+  return ifTrue;
+}
+
+template <class Abi>
+stdx::simd<float, Abi> realSqrt(const stdx::simd<float, Abi>& v) {
+  return stdx::sqrt(v);
+}
+
+// A Vec3 of batches: lane k of x, y, z is one neighbour's vector.
+struct BatchVec3 {
+  FloatBatch x, y, z;
+};
+
+inline BatchVec3 broadcast(Vec3 v) {
+  return {FloatBatch(v.x), FloatBatch(v.y), FloatBatch(v.z)};
+}
+inline BatchVec3 operator+(const BatchVec3& a, const BatchVec3& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+inline BatchVec3 operator-(const BatchVec3& a, const BatchVec3& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+inline BatchVec3 operator-(const BatchVec3& a) {
+  return {-a.x, -a.y, -a.z};
+}
+inline BatchVec3 operator*(const BatchVec3& a, const FloatBatch& s) {
+  return {a.x * s, a.y * s, a.z * s};
+}
+inline BatchVec3& operator+=(BatchVec3& a, const BatchVec3& b) {
+  a.x += b.x;
+  a.y += b.y;
+  a.z += b.z;
+  return a;
+}
+inline FloatBatch dot(const BatchVec3& a, const BatchVec3& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+// The sum over the lanes: what the batch of neighbours adds to one particle.
+inline Vec3 sumLanes(const BatchVec3& a) {
+  return {stdx::reduce(a.x), stdx::reduce(a.y), stdx::reduce(a.z)};
+}
+#endif
+
+}  // namespace sph

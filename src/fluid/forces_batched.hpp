@@ -1,0 +1,140 @@
+// The force pass on the CPU with neighbours taken a SIMD batch at a time over the contiguous
+// rows of cells, like the batched density pass: the same formulas as forces.hpp (core/
+// momentum.hpp, core/kernels.hpp, written once for a float and for a batch), lanes that are not
+// neighbours given zero kernel factors.
+#pragma once
+
+#if !defined(__CUDACC__)
+
+#include "fluid/density_pressure_batched.hpp"
+
+namespace sph::fluid::detail {
+
+template <class Options, class Kernels>
+void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>& grid,
+                      const BoundaryParticles<CpuBackend>& boundary, const FluidParameters& params,
+                      Kernels kernels) {
+  constexpr bool kSymmetric = Options::form == PressureForm::Symmetric;
+  constexpr bool kArtificial = Options::viscosity == ViscosityModel::Artificial;
+  const std::size_t n = fluid.count;
+  padArrays(n, 0.0f, {&fluid.batchVX, &fluid.batchVY, &fluid.batchVZ});
+  float* vx = fluid.batchVX.data();
+  float* vy = fluid.batchVY.data();
+  float* vz = fluid.batchVZ.data();
+  const Vec4* velocity = fluid.velocity.data();
+  CpuBackend::forEach(n, [=](std::size_t i) {
+    vx[i] = velocity[i].x;
+    vy[i] = velocity[i].y;
+    vz[i] = velocity[i].z;
+  });
+
+  const GridSpec spec = grid.spec;
+  const std::uint32_t* cellStart = grid.cellStart.data();
+  const GridSpec wallGrid = boundary.grid;
+  const std::uint32_t* wallCellStart = boundary.cellStart.data();
+  const float* x = fluid.batchX.data();
+  const float* y = fluid.batchY.data();
+  const float* z = fluid.batchZ.data();
+  const float* stateA = fluid.batchPOverRho2.data();
+  const float* stateB = fluid.batchInverseDensity.data();
+  const float* stateC = fluid.batchPressure.data();
+  const float* stateD = fluid.batchDensity.data();
+  const float* wx = boundary.batchX.data();
+  const float* wy = boundary.batchY.data();
+  const float* wz = boundary.batchZ.data();
+  const float* wv = boundary.batchVolume.data();
+  const Vec4* state = fluid.pressureState.data();
+  Vec4* acceleration = fluid.acceleration.data();
+  const std::uint32_t* id = fluid.id.data();
+  const Vec4* external = fluid.externalById.size() ? fluid.externalById.data() : nullptr;
+  const FluidParameters p = params;
+  const FloatBatch h2(p.h * p.h), zero(0.0f);
+  const FloatBatch mass(p.mass), viscosity(p.viscosity), soundSpeed(p.soundSpeed), h(p.h);
+  const FloatBatch restDensity(p.restDensity), wallFriction(p.wallFriction);
+  const BatchVec3 gravity = broadcast(p.gravity);
+
+  CpuBackend::forEach(n, [=](std::size_t i) {
+    const FloatBatch lane = laneNumbers();
+    const Vec3 xs{x[i], y[i], z[i]};
+    const BatchVec3 xi = broadcast(xs);
+    const BatchVec3 vi = broadcast(Vec3{vx[i], vy[i], vz[i]});
+    const Vec4 si = state[i];
+    const FloatBatch pOverRho2I(si.x), inverseDensityI(si.y), pI(si.z), rhoI(si.w);
+    BatchVec3 a{zero, zero, zero}, colourGradient{zero, zero, zero};
+    FloatBatch colourLaplacian(0.0f);
+
+    forEachNeighborRange(spec, cellStart, xs, [&](std::uint32_t begin, std::uint32_t end) {
+      for (std::uint32_t j = begin; j < end; j += kBatch) {
+        const BatchVec3 rij = xi - loadBatch(x, y, z, j);
+        const FloatBatch r2 = dot(rij, rij);
+        const FloatBatch offset = lane + FloatBatch(float(j)) - FloatBatch(float(i));
+        const auto near = lane < FloatBatch(float(end - j)) && r2 < h2 && offset != zero;
+        if (stdx::none_of(near)) continue;
+        const FloatBatch r = realSqrt(select(near, r2, h2));
+        const BatchVec3 gradW = rij * select(near, kernels.gradFactor(r), zero);
+        const FloatBatch inverseDensityJ = loadBatch(stateB, j), rhoJ = loadBatch(stateD, j);
+        if constexpr (kSymmetric) {
+          a += pressureAccelerationSymmetric(mass, pOverRho2I, loadBatch(stateA, j), gradW);
+        } else {
+          a += pressureAccelerationPaper(mass, pI, inverseDensityI, loadBatch(stateC, j),
+                                         inverseDensityJ, gradW);
+        }
+        const BatchVec3 vij = vi - loadBatch(vx, vy, vz, j);
+        if constexpr (kArtificial) {
+          a += artificialViscosityAcceleration(viscosity, soundSpeed, h, mass, rhoI, rhoJ, vij, rij,
+                                               select(near, r2, h2), gradW);
+        } else {
+          a += mullerViscosityAcceleration(viscosity, mass, rhoI, rhoJ, vij,
+                                           select(near, kernels.laplacian(r), zero));
+        }
+        const FloatBatch volumeJ = mass * inverseDensityJ;  // seed 1 eqs. 11-12, C_j = 1
+        colourGradient += rij * (volumeJ * select(near, kernels.colourGradFactor(r), zero));
+        if constexpr (Options::surfaceTension)
+          colourLaplacian += volumeJ * select(near, kernels.colourLaplacian(r), zero);
+      }
+    });
+
+    if (wallCellStart != nullptr) {
+      forEachNeighborRange(
+          wallGrid, wallCellStart, xs, [&](std::uint32_t begin, std::uint32_t end) {
+            for (std::uint32_t b = begin; b < end; b += kBatch) {
+              const BatchVec3 rib = xi - loadBatch(wx, wy, wz, b);
+              const FloatBatch r2 = dot(rib, rib);
+              const auto near = lane < FloatBatch(float(end - b)) && r2 < h2 && r2 > zero;
+              if (stdx::none_of(near)) continue;
+              const FloatBatch r = realSqrt(select(near, r2, h2));
+              const FloatBatch volumeB = loadBatch(wv, b);
+              const FloatBatch massB = restDensity * volumeB;
+              const BatchVec3 gradW = rib * select(near, kernels.gradFactor(r), zero);
+              const FloatBatch pB = wallPressure(pI, rhoI, gravity, -rib, p.clampNegativePressure);
+              a += boundaryPressureAcceleration(massB, pI, rhoI, pB, gradW);
+              if (p.wallFriction > 0.0f) {
+                const BatchVec3 friction =
+                    kArtificial
+                        ? artificialViscosityAcceleration(viscosity, soundSpeed, h, massB, rhoI,
+                                                          restDensity, vi, rib,
+                                                          select(near, r2, h2), gradW)
+                        : mullerViscosityAcceleration(viscosity, massB, rhoI, restDensity, vi,
+                                                      select(near, kernels.laplacian(r), zero));
+                a += friction * wallFriction;
+              }
+              // Walls are not empty space: fluid against a wall is not free surface.
+              colourGradient += rib * (volumeB * select(near, kernels.colourGradFactor(r), zero));
+            }
+          });
+    }
+
+    Vec3 ai = (external ? p.gravity + xyz(external[id[i]]) : p.gravity) + sumLanes(a);
+    const Vec3 gradient = sumLanes(colourGradient);
+    const float normalLength = length(gradient);
+    if (Options::surfaceTension && normalLength > p.surfaceThreshold) {
+      // Müller et al. 2003 eq. 19: f = -σ ∇²c n/|n|, as an acceleration.
+      ai -= gradient * (p.surfaceTension * stdx::reduce(colourLaplacian) / (normalLength * si.w));
+    }
+    acceleration[i] = makeVec4(ai, normalLength);
+  });
+}
+
+}  // namespace sph::fluid::detail
+
+#endif  // !__CUDACC__
