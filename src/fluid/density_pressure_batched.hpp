@@ -1,12 +1,17 @@
 // The density pass on the CPU with neighbours taken a SIMD batch at a time (8 with AVX2) over
 // the contiguous rows of cells: the same formulas as density_pressure.hpp (core/kernels.hpp,
 // core/eos.hpp), and for each particle the same neighbours in the same order on any thread
-// count. It also splits what the batched force pass reads into padded arrays.
+// count. It also splits what the batched force pass reads into padded arrays, and lists each
+// particle's neighbours for it.
 #pragma once
 
 #if !defined(__CUDACC__)
 
 #include <cstdint>
+
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
 
 #include "backend/cpu_backend.hpp"
 #include "fluid/neighbors.hpp"
@@ -39,9 +44,64 @@ inline BatchVec3 loadBatch(const float* x, const float* y, const float* z, std::
   return {loadBatch(x, j), loadBatch(y, j), loadBatch(z, j)};
 }
 
+// from[at[0]], from[at[1]], ...: a batch of the particles a neighbour list names. (AVX2's
+// gather instruction measured slower here than these loads.)
+inline FloatBatch gatherBatch(const float* from, const std::uint32_t* at) {
+  return FloatBatch([&](auto lane) { return from[at[lane]]; });
+}
+
 // 0, 1, 2, ...: lane k of a load at j holds particle j + k.
 inline FloatBatch laneNumbers() {
   return FloatBatch([](auto k) { return float(k); });
+}
+
+// Bit k set for lane k of the mask.
+inline unsigned maskBits(const FloatBatch::mask_type& mask) {
+  FloatBatch sign(0.0f);
+  stdx::where(mask, sign) = FloatBatch(-1.0f);
+#if defined(__AVX2__)
+  if constexpr (kBatch == 8) return unsigned(_mm256_movemask_ps(static_cast<__m256>(sign)));
+#endif
+  unsigned bits = 0;
+  for (std::size_t k = 0; k < kBatch; ++k) bits |= (sign[k] < 0.0f ? 1u : 0u) << k;
+  return bits;
+}
+
+// Writes j + k for each lane k set in `bits`, in order, from `out` on; returns how many. May
+// write a whole batch past them: `out` needs room for kBatch more.
+inline std::uint32_t appendLanes(std::uint32_t* out, std::uint32_t j, unsigned bits) {
+#if defined(__AVX2__)
+  if constexpr (kBatch == 8) {
+    // For each 8-bit mask the lanes set, packed to the front (AVX2 has no compress).
+    static const auto packing = [] {
+      struct Table {
+        alignas(32) std::int32_t lanes[256][8];
+      } table{};
+      for (unsigned mask = 0; mask < 256; ++mask) {
+        int count = 0;
+        for (int lane = 0; lane < 8; ++lane)
+          if (mask & (1u << lane)) table.lanes[mask][count++] = lane;
+      }
+      return table;
+    }();
+    const __m256i lanes = _mm256_load_si256(reinterpret_cast<const __m256i*>(packing.lanes[bits]));
+    const __m256i indices = _mm256_add_epi32(_mm256_set1_epi32(int(j)), lanes);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), indices);
+    return std::uint32_t(__builtin_popcount(bits));
+  }
+#endif
+  std::uint32_t count = 0;
+  for (; bits != 0; bits &= bits - 1) out[count++] = j + std::uint32_t(__builtin_ctz(bits));
+  return count;
+}
+
+// A particle's neighbour list is padded to a whole number of batches with the index of the
+// first padding element (n), whose position is far away: a batch gathered from the list needs
+// no count of its own.
+constexpr std::uint32_t kMaxListed = 256;  // more neighbours than this: none listed
+
+inline std::uint32_t paddedLength(std::uint32_t count) {
+  return (count + std::uint32_t(kBatch) - 1) / std::uint32_t(kBatch) * std::uint32_t(kBatch);
 }
 
 template <class Kernels>
@@ -51,9 +111,9 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
   const std::size_t n = fluid.count;
   // Far away: the padding never passes a distance test.
   padArrays(n, 1e30f, {&fluid.batchX, &fluid.batchY, &fluid.batchZ});
-  padArrays(n, 0.0f,
-            {&fluid.batchPOverRho2, &fluid.batchInverseDensity, &fluid.batchPressure,
-             &fluid.batchDensity});
+  // No pressure and no volume, and a density to divide by: padding lanes add exactly nothing.
+  padArrays(n, 0.0f, {&fluid.batchPOverRho2, &fluid.batchInverseDensity, &fluid.batchPressure});
+  padArrays(n, 1.0f, {&fluid.batchDensity});
   float* x = fluid.batchX.data();
   float* y = fluid.batchY.data();
   float* z = fluid.batchZ.data();
@@ -81,12 +141,21 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
   float* stateD = fluid.batchDensity.data();
   const FluidParameters p = params;
   const FloatBatch h2(params.h * params.h);
+  const std::uint32_t stride = fluid.neighborStride;
+  std::uint32_t* neighbors = fluid.neighbors.data();
+  std::uint32_t* neighborCount = fluid.neighborCount.data();
+  const std::uint32_t padding = std::uint32_t(n);
 
   CpuBackend::forEach(n, [=](std::size_t i) {
     const FloatBatch lane = laneNumbers();
     const BatchVec3 xi = broadcast(Vec3{x[i], y[i], z[i]});
     // Seed 1 eq. 4, self included; walls count with mass ρ0 ψ_b (Akinci et al. 2012 eq. 6).
     FloatBatch sum(0.0f), wallSum(0.0f);
+    // The neighbours (self excluded) for the force pass, in the order found: gathered here,
+    // where a batch may be written past the last, then copied to the particle's list.
+    std::uint32_t found[kMaxListed + kBatchPadding];
+    std::uint32_t count = 0;
+    const FloatBatch self = FloatBatch(float(i)) - lane;
     forEachNeighborRange(spec, cellStart, Vec3{x[i], y[i], z[i]},
                          [&](std::uint32_t begin, std::uint32_t end) {
                            for (std::uint32_t j = begin; j < end; j += kBatch) {
@@ -94,8 +163,22 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
                              const FloatBatch r2 = dot(rij, rij);
                              const auto near = lane < FloatBatch(float(end - j)) && r2 < h2;
                              sum += kernels.W(select(near, r2, h2));
+                             const unsigned bits = maskBits(near && FloatBatch(float(j)) != self);
+                             if (bits == 0) continue;
+                             if (count <= kMaxListed)
+                               count += appendLanes(found + count, j, bits);
+                             else
+                               count += std::uint32_t(__builtin_popcount(bits));
                            }
                          });
+    std::uint32_t* list = neighbors + i * stride;
+    if (count <= kMaxListed && paddedLength(count) <= stride) {
+      for (std::uint32_t k = 0; k < count; ++k) list[k] = found[k];
+      for (std::uint32_t k = count; k < paddedLength(count); ++k) list[k] = padding;
+      neighborCount[i] = count;
+    } else {
+      neighborCount[i] = kNeighborOverflow;  // the force pass searches the cells
+    }
     if (wallCellStart != nullptr) {
       forEachNeighborRange(wallGrid, wallCellStart, Vec3{x[i], y[i], z[i]},
                            [&](std::uint32_t begin, std::uint32_t end) {

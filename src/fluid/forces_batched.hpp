@@ -1,7 +1,8 @@
-// The force pass on the CPU with neighbours taken a SIMD batch at a time over the contiguous
-// rows of cells, like the batched density pass: the same formulas as forces.hpp (core/
-// momentum.hpp, core/kernels.hpp, written once for a float and for a batch), lanes that are not
-// neighbours given zero kernel factors.
+// The force pass on the CPU, a SIMD batch of neighbours at a time: gathered from the lists the
+// batched density pass made (padded to whole batches), or, for a particle with too many
+// neighbours to list, loaded from the contiguous rows of cells. The same formulas as forces.hpp
+// (core/momentum.hpp, core/kernels.hpp, written once for a float and for a batch); lanes that
+// are not neighbours get zero kernel factors.
 #pragma once
 
 #if !defined(__CUDACC__)
@@ -35,10 +36,11 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
   const float* x = fluid.batchX.data();
   const float* y = fluid.batchY.data();
   const float* z = fluid.batchZ.data();
-  const float* stateA = fluid.batchPOverRho2.data();
-  const float* stateB = fluid.batchInverseDensity.data();
-  const float* stateC = fluid.batchPressure.data();
-  const float* stateD = fluid.batchDensity.data();
+  // What the pressure term reads of a neighbour: p/ρ² (symmetric form) or p (the paper's).
+  const float* pressureTermJ =
+      kSymmetric ? fluid.batchPOverRho2.data() : fluid.batchPressure.data();
+  const float* inverseDensity = fluid.batchInverseDensity.data();
+  const float* density = fluid.batchDensity.data();
   const float* wx = boundary.batchX.data();
   const float* wy = boundary.batchY.data();
   const float* wz = boundary.batchZ.data();
@@ -46,6 +48,9 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
   const Vec4* state = fluid.pressureState.data();
   Vec4* acceleration = fluid.acceleration.data();
   const std::uint32_t* id = fluid.id.data();
+  const std::uint32_t stride = fluid.neighborStride;
+  const std::uint32_t* neighbors = fluid.neighbors.data();
+  const std::uint32_t* neighborCount = fluid.neighborCount.data();
   const Vec4* external = fluid.externalById.size() ? fluid.externalById.data() : nullptr;
   const FluidParameters p = params;
   const FloatBatch h2(p.h * p.h), zero(0.0f);
@@ -54,7 +59,6 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
   const BatchVec3 gravity = broadcast(p.gravity);
 
   CpuBackend::forEach(n, [=](std::size_t i) {
-    const FloatBatch lane = laneNumbers();
     const Vec3 xs{x[i], y[i], z[i]};
     const BatchVec3 xi = broadcast(xs);
     const BatchVec3 vi = broadcast(Vec3{vx[i], vy[i], vz[i]});
@@ -63,38 +67,61 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
     BatchVec3 a{zero, zero, zero}, colourGradient{zero, zero, zero};
     FloatBatch colourLaplacian(0.0f);
 
-    forEachNeighborRange(spec, cellStart, xs, [&](std::uint32_t begin, std::uint32_t end) {
-      for (std::uint32_t j = begin; j < end; j += kBatch) {
-        const BatchVec3 rij = xi - loadBatch(x, y, z, j);
-        const FloatBatch r2 = dot(rij, rij);
-        const FloatBatch offset = lane + FloatBatch(float(j)) - FloatBatch(float(i));
-        const auto near = lane < FloatBatch(float(end - j)) && r2 < h2 && offset != zero;
-        if (stdx::none_of(near)) continue;
-        const FloatBatch r = realSqrt(select(near, r2, h2));
-        const BatchVec3 gradW = rij * select(near, kernels.gradFactor(r), zero);
-        const FloatBatch inverseDensityJ = loadBatch(stateB, j), rhoJ = loadBatch(stateD, j);
-        if constexpr (kSymmetric) {
-          a += pressureAccelerationSymmetric(mass, pOverRho2I, loadBatch(stateA, j), gradW);
-        } else {
-          a += pressureAccelerationPaper(mass, pI, inverseDensityI, loadBatch(stateC, j),
-                                         inverseDensityJ, gradW);
-        }
-        const BatchVec3 vij = vi - loadBatch(vx, vy, vz, j);
-        if constexpr (kArtificial) {
-          a += artificialViscosityAcceleration(viscosity, soundSpeed, h, mass, rhoI, rhoJ, vij, rij,
-                                               select(near, r2, h2), gradW);
-        } else {
-          a += mullerViscosityAcceleration(viscosity, mass, rhoI, rhoJ, vij,
-                                           select(near, kernels.laplacian(r), zero));
-        }
-        const FloatBatch volumeJ = mass * inverseDensityJ;  // seed 1 eqs. 11-12, C_j = 1
-        colourGradient += rij * (volumeJ * select(near, kernels.colourGradFactor(r), zero));
-        if constexpr (Options::surfaceTension)
-          colourLaplacian += volumeJ * select(near, kernels.colourLaplacian(r), zero);
+    // The pair terms of a batch of fluid neighbours; lanes off `candidates`, or out of reach,
+    // add nothing.
+    const auto addPairs = [&](const BatchVec3& xj, const BatchVec3& vj,
+                              const FloatBatch& pressureTerm, const FloatBatch& inverseDensityJ,
+                              const FloatBatch& rhoJ, const FloatBatch::mask_type& candidates) {
+      const BatchVec3 rij = xi - xj;
+      const FloatBatch r2 = dot(rij, rij);
+      const auto near = candidates && r2 < h2;
+      if (stdx::none_of(near)) return;
+      const FloatBatch r = realSqrt(select(near, r2, h2));
+      const BatchVec3 gradW = rij * select(near, kernels.gradFactor(r), zero);
+      if constexpr (kSymmetric) {
+        a += pressureAccelerationSymmetric(mass, pOverRho2I, pressureTerm, gradW);
+      } else {
+        a += pressureAccelerationPaper(mass, pI, inverseDensityI, pressureTerm, inverseDensityJ,
+                                       gradW);
       }
-    });
+      const BatchVec3 vij = vi - vj;
+      if constexpr (kArtificial) {
+        a += artificialViscosityAcceleration(viscosity, soundSpeed, h, mass, rhoI, rhoJ, vij, rij,
+                                             select(near, r2, h2), gradW);
+      } else {
+        a += mullerViscosityAcceleration(viscosity, mass, rhoI, rhoJ, vij,
+                                         select(near, kernels.laplacian(r), zero));
+      }
+      const FloatBatch volumeJ = mass * inverseDensityJ;  // seed 1 eqs. 11-12, C_j = 1
+      colourGradient += rij * (volumeJ * select(near, kernels.colourGradFactor(r), zero));
+      if constexpr (Options::surfaceTension)
+        colourLaplacian += volumeJ * select(near, kernels.colourLaplacian(r), zero);
+    };
+
+    const std::uint32_t count = neighborCount[i];
+    if (count != kNeighborOverflow) {
+      const std::uint32_t* list = neighbors + i * stride;
+      for (std::uint32_t k = 0; k < count; k += kBatch) {
+        const std::uint32_t* at = list + k;  // padded: whole batches
+        const auto gather = [at](const float* from) { return gatherBatch(from, at); };
+        addPairs({gather(x), gather(y), gather(z)}, {gather(vx), gather(vy), gather(vz)},
+                 gather(pressureTermJ), gather(inverseDensity), gather(density),
+                 FloatBatch::mask_type(true));
+      }
+    } else {
+      const FloatBatch lane = laneNumbers();
+      forEachNeighborRange(spec, cellStart, xs, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t j = begin; j < end; j += kBatch) {
+          const FloatBatch offset = lane + FloatBatch(float(j)) - FloatBatch(float(i));
+          addPairs(loadBatch(x, y, z, j), loadBatch(vx, vy, vz, j), loadBatch(pressureTermJ, j),
+                   loadBatch(inverseDensity, j), loadBatch(density, j),
+                   lane < FloatBatch(float(end - j)) && offset != zero);
+        }
+      });
+    }
 
     if (wallCellStart != nullptr) {
+      const FloatBatch lane = laneNumbers();
       forEachNeighborRange(
           wallGrid, wallCellStart, xs, [&](std::uint32_t begin, std::uint32_t end) {
             for (std::uint32_t b = begin; b < end; b += kBatch) {
