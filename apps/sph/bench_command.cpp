@@ -110,12 +110,14 @@ int benchCommand(const BenchOptions& options) {
     }
   }
   if (!options.json.empty()) {
+    // JSON Lines: one object per scene and size, each saying where it ran.
     std::ofstream out(options.json);
-    out << nlohmann::json{{"backend", backendName},
-                          {"threads", backend::threadCount()},
-                          {"results", results}}
-               .dump(2)
-        << '\n';
+    for (nlohmann::json& result : results) {
+      result["backend"] = backendName;
+      result["threads"] = backend::threadCount();
+      result["batched_passes"] = !gpu && backend::batchedPasses();
+      out << result.dump() << '\n';
+    }
     if (!out) {
       std::fprintf(stderr, "error: %s: cannot write the results\n", options.json.c_str());
       return 1;

@@ -100,7 +100,8 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--steps", bench.steps, "Timed steps per size")->check(CLI::PositiveNumber);
   benchCmd->add_option("--scene", bench.scenes, "Also time this scene file (repeatable)");
   benchCmd->add_option("--set", bench.overrides, "Override a key of the --scene files")->take_all();
-  benchCmd->add_option("--json", bench.json, "Also write the results as JSON to this file");
+  benchCmd->add_option("--json", bench.json,
+                       "Also write the results to this file, one JSON object per line");
   benchCmd
       ->add_option("--influence", bench.influenceRatios,
                    "Time each --scene with objects at these influence sphere radii (x the object "

@@ -44,6 +44,48 @@ inline BatchVec3 loadBatch(const float* x, const float* y, const float* z, std::
   return {loadBatch(x, j), loadBatch(y, j), loadBatch(z, j)};
 }
 
+#if defined(__AVX2__)
+// Rows to columns: rows[k] holds 8 floats of one particle; after, rows[c] holds float c of the
+// 8 particles.
+inline void transpose8(__m256 (&rows)[8]) {
+  const __m256 t0 = _mm256_unpacklo_ps(rows[0], rows[1]), t1 = _mm256_unpackhi_ps(rows[0], rows[1]);
+  const __m256 t2 = _mm256_unpacklo_ps(rows[2], rows[3]), t3 = _mm256_unpackhi_ps(rows[2], rows[3]);
+  const __m256 t4 = _mm256_unpacklo_ps(rows[4], rows[5]), t5 = _mm256_unpackhi_ps(rows[4], rows[5]);
+  const __m256 t6 = _mm256_unpacklo_ps(rows[6], rows[7]), t7 = _mm256_unpackhi_ps(rows[6], rows[7]);
+  const __m256 s0 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s1 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 s2 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s3 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 s4 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s5 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 s6 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s7 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(3, 2, 3, 2));
+  rows[0] = _mm256_permute2f128_ps(s0, s4, 0x20);
+  rows[1] = _mm256_permute2f128_ps(s1, s5, 0x20);
+  rows[2] = _mm256_permute2f128_ps(s2, s6, 0x20);
+  rows[3] = _mm256_permute2f128_ps(s3, s7, 0x20);
+  rows[4] = _mm256_permute2f128_ps(s0, s4, 0x31);
+  rows[5] = _mm256_permute2f128_ps(s1, s5, 0x31);
+  rows[6] = _mm256_permute2f128_ps(s2, s6, 0x31);
+  rows[7] = _mm256_permute2f128_ps(s3, s7, 0x31);
+}
+#endif
+
+// The 8 floats of each record `at` names, as 8 batches: column c of the records in lane k.
+inline void gatherRecords(const float* records, const std::uint32_t* at, FloatBatch (&columns)[8]) {
+#if defined(__AVX2__)
+  if constexpr (kBatch == 8) {
+    __m256 rows[8];
+    for (int k = 0; k < 8; ++k) rows[k] = _mm256_loadu_ps(records + 8 * std::size_t(at[k]));
+    transpose8(rows);
+    for (int c = 0; c < 8; ++c) columns[c] = FloatBatch(rows[c]);
+    return;
+  }
+#endif
+  for (int c = 0; c < 8; ++c)
+    columns[c] = FloatBatch([&](auto lane) { return records[8 * std::size_t(at[lane]) + c]; });
+}
+
 // from[at[0]], from[at[1]], ...: a batch of the particles a neighbour list names. (AVX2's
 // gather instruction measured slower here than these loads.)
 inline FloatBatch gatherBatch(const float* from, const std::uint32_t* at) {

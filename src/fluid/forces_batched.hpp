@@ -23,10 +23,31 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
   float* vy = fluid.batchVY.data();
   float* vz = fluid.batchVZ.data();
   const Vec4* velocity = fluid.velocity.data();
-  CpuBackend::forEach(n, [=](std::size_t i) {
-    vx[i] = velocity[i].x;
-    vy[i] = velocity[i].y;
-    vz[i] = velocity[i].z;
+  // Records: the padding far away, with no pressure, volume or velocity.
+  fluid.batchRecords.resize(8 * (n + kBatchPadding));
+  float* records = fluid.batchRecords.data();
+  const float* pressureTermSource =
+      kSymmetric ? fluid.batchPOverRho2.data() : fluid.batchPressure.data();
+  const float* inverseDensitySource = fluid.batchInverseDensity.data();
+  const float* px = fluid.batchX.data();
+  const float* py = fluid.batchY.data();
+  const float* pz = fluid.batchZ.data();
+  CpuBackend::forEach(n + kBatchPadding, [=](std::size_t i) {
+    const bool real = i < n;
+    if (real) {
+      vx[i] = velocity[i].x;
+      vy[i] = velocity[i].y;
+      vz[i] = velocity[i].z;
+    }
+    float* r = records + 8 * i;
+    r[0] = px[i];
+    r[1] = py[i];
+    r[2] = pz[i];
+    r[3] = pressureTermSource[i];
+    r[4] = real ? velocity[i].x : 0.0f;
+    r[5] = real ? velocity[i].y : 0.0f;
+    r[6] = real ? velocity[i].z : 0.0f;
+    r[7] = inverseDensitySource[i];
   });
 
   const GridSpec spec = grid.spec;
@@ -103,9 +124,9 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
       const std::uint32_t* list = neighbors + i * stride;
       for (std::uint32_t k = 0; k < count; k += kBatch) {
         const std::uint32_t* at = list + k;  // padded: whole batches
-        const auto gather = [at](const float* from) { return gatherBatch(from, at); };
-        addPairs({gather(x), gather(y), gather(z)}, {gather(vx), gather(vy), gather(vz)},
-                 gather(pressureTermJ), gather(inverseDensity), gather(density),
+        FloatBatch c[8];
+        gatherRecords(records, at, c);
+        addPairs({c[0], c[1], c[2]}, {c[4], c[5], c[6]}, c[3], c[7], gatherBatch(density, at),
                  FloatBatch::mask_type(true));
       }
     } else {

@@ -51,6 +51,9 @@ struct FluidParticles {
   Buffer<float> batchVX, batchVY, batchVZ;
   // pressureState split: p/ρ², 1/ρ, p, ρ (written by the density pass)
   Buffer<float> batchPOverRho2, batchInverseDensity, batchPressure, batchDensity;
+  // What the force pass reads of a listed neighbour, 8 floats a particle, so that 8 neighbours
+  // load as 8 rows and transpose into batches: x, y, z, pressure term, vx, vy, vz, 1/ρ.
+  Buffer<float> batchRecords;
 };
 
 // Static wall particles (Akinci et al. 2012), sorted by cell of their own grid once at set-up.
