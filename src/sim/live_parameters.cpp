@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sim/simulation_impl.hpp"
+#include "sph/core/eos.hpp"
 
 namespace sph {
 
@@ -48,10 +49,9 @@ void Simulation::setLiveParameters(const LiveParameters& values) {
   next.fluid.surfaceTension = values.surfaceTension;
   next.gravity = values.gravity;
   next.interaction.influenceRatio = values.influenceRatio;
-  // The stiffness of every equation of state here is ρ0 c0² over a constant.
   next.calibration.stiffness = values.stiffness;
   next.calibration.speedOfSound =
-      s.calibration.soundSpeed * std::sqrt(values.stiffness / s.calibration.stiffness);
+      soundSpeedForStiffness(next.fluid.eos, values.stiffness, next.fluid.restDensity);
 
   Calibration calibration = sim::calibrate(next);
   calibration.fluidParticles = s.calibration.fluidParticles;

@@ -9,28 +9,16 @@
 #include <sstream>
 #include <string>
 
+#include "run_sph.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code;
-  std::string output;  // stdout and stderr together
-};
+using Result = sph::testing::CommandResult;
 
 Result runSph(const std::string& arguments) {
-  // One log per test: ctest runs tests of this file in parallel processes.
-  const fs::path log =
-      fs::path(::testing::TempDir()) /
-      ("sph_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-       ".log");
-  const std::string command =
-      std::string(SPH_BINARY) + " " + arguments + " > " + log.string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+  return sph::testing::runSph(arguments, "sph_cli_");
 }
 
 std::string readFile(const fs::path& path) {

@@ -40,6 +40,7 @@ TEST(EquationOfState, StiffnessGivesTheSoundSpeed) {
     const double dp = pressureFromDensity(eos, rho0 + e, rho0, k, false) -
                       pressureFromDensity(eos, rho0 - e, rho0, k, false);
     EXPECT_NEAR(dp / (2 * e), c0 * c0, 1e-3 * c0 * c0);
+    EXPECT_NEAR(soundSpeedForStiffness(eos, k, rho0), c0, 1e-12 * c0);
   }
 }
 

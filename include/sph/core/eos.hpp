@@ -1,6 +1,8 @@
 // Equations of state (seed 2) and the stiffness that gives a chosen speed of sound.
 #pragma once
 
+#include <cmath>
+
 #include "sph/core/hostdevice.hpp"
 #include "sph/core/options.hpp"
 
@@ -47,6 +49,11 @@ inline double stiffnessForSoundSpeed(EquationOfState eos, double soundSpeed, dou
     default:
       return restDensity * c2 / 7.0;  // B = ρ0 c0² / 7
   }
+}
+
+// The inverse: the sound speed a stiffness gives.
+inline double soundSpeedForStiffness(EquationOfState eos, double stiffness, double restDensity) {
+  return std::sqrt(stiffness / stiffnessForSoundSpeed(eos, 1.0, restDensity));
 }
 
 }  // namespace sph
