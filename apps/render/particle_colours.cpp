@@ -102,4 +102,59 @@ std::vector<std::uint8_t> particleColours(const ParticleFrame& frame, ColourMode
   return rgba;
 }
 
+FluidQuantity quantityShown(ColourMode mode) {
+  switch (mode) {
+    case ColourMode::Density:
+      return FluidQuantity::Density;
+    case ColourMode::Pressure:
+      return FluidQuantity::Pressure;
+    case ColourMode::Speed:
+      return FluidQuantity::Speed;
+    case ColourMode::Surface:
+      return FluidQuantity::Surface;
+    case ColourMode::Kind:
+      break;
+  }
+  return FluidQuantity::None;
+}
+
+FluidColourTable fluidColourTable(ColourMode mode, ValueRange range, bool fluidShown) {
+  FluidColourTable table;
+  if (usesRange(mode)) {
+    table.lo = range.min;
+    table.hi = range.max;
+  }
+  constexpr int last = FluidColourTable::kEntries - 1;
+  for (int k = 0; k <= last; ++k) {
+    const float t = float(k) / float(last);
+    Rgb c;
+    switch (mode) {
+      case ColourMode::Kind:
+        c = kindColour(ParticleKind::Fluid, -1);
+        break;
+      case ColourMode::Surface:
+        c = surfaceColour(k > last / 2);  // the values are 0 and 1
+        break;
+      case ColourMode::Density:
+      case ColourMode::Pressure:
+      case ColourMode::Speed:
+        c = sequentialColour(t);
+        break;
+    }
+    table.rgba[4 * k + 0] = toByte(c.r);
+    table.rgba[4 * k + 1] = toByte(c.g);
+    table.rgba[4 * k + 2] = toByte(c.b);
+    table.rgba[4 * k + 3] = fluidShown ? 255 : 0;
+  }
+  return table;
+}
+
+void colourFromTable(const FluidColourTable& table, const float* value, std::size_t n,
+                     std::uint8_t* rgba) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const int k = fluidColourEntry(table.lo, table.hi, value[i]);
+    std::copy_n(&table.rgba[4 * k], 4, &rgba[4 * i]);
+  }
+}
+
 }  // namespace sph::render

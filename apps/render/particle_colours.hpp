@@ -8,6 +8,7 @@
 
 #include "camera.hpp"
 #include "colour_map.hpp"
+#include "fluid_colour_table.hpp"
 #include "sph/frame.hpp"
 
 namespace sph::render {
@@ -44,5 +45,12 @@ bool particleShown(const ParticleFrame& frame, std::size_t i, const ParticleFilt
 // RGBA8 per particle, alpha 0 for particles the filter hides.
 std::vector<std::uint8_t> particleColours(const ParticleFrame& frame, ColourMode mode,
                                           ValueRange range, const ParticleFilter& filter);
+
+// What a fluid drawn from the GPU carries beside its position for `mode` (None for kind).
+FluidQuantity quantityShown(ColourMode mode);
+
+// The table that colours the fluid like particleColour does, from the value quantityShown asks
+// for, within 1/255 of the map; alpha 0 when the fluid is hidden.
+FluidColourTable fluidColourTable(ColourMode mode, ValueRange range, bool fluidShown);
 
 }  // namespace sph::render

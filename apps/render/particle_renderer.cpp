@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "colour_bar.hpp"
 #include "gl_program.hpp"
@@ -69,29 +71,60 @@ ParticleRenderer::~ParticleRenderer() {
   glDeleteVertexArrays(3, arrays);
 }
 
-void ParticleRenderer::setParticles(const ParticleFrame& frame) {
-  frame_ = frame;
+void ParticleRenderer::reserve(std::size_t particles) {
+  if (particles <= capacity_) return;
+  // The fluid a GPU wrote is in the storage being replaced; its next write refills it.
+  fluidOnGpu_ = 0;
+  capacity_ = particles;
+  glBindBuffer(GL_ARRAY_BUFFER, positionBuffer_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(4 * particles * sizeof(float)), nullptr,
+               GL_DYNAMIC_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, colourBuffer_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(4 * particles), nullptr, GL_DYNAMIC_DRAW);
+}
+
+void ParticleRenderer::uploadPositions(const ParticleFrame& frame, std::size_t offset) {
   const std::size_t n = frame.size();
-  std::vector<float> positions(4 * n);
+  if (n == 0) return;
+  std::vector<float> positions(4 * n, 1.0f);
   for (std::size_t i = 0; i < n; ++i) std::copy_n(&frame.position[3 * i], 3, &positions[4 * i]);
   glBindBuffer(GL_ARRAY_BUFFER, positionBuffer_);
-  if (n > capacity_) {
-    capacity_ = n;
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(4 * n * sizeof(float)), positions.data(),
-                 GL_DYNAMIC_DRAW);
-  } else if (n > 0) {
-    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(4 * n * sizeof(float)), positions.data());
-  }
+  glBufferSubData(GL_ARRAY_BUFFER, GLintptr(4 * offset * sizeof(float)),
+                  GLsizeiptr(positions.size() * sizeof(float)), positions.data());
+}
+
+void ParticleRenderer::setParticles(const ParticleFrame& frame) {
+  fluidOnGpu_ = 0;
+  frame_ = frame;
+  reserve(frame.size());
+  uploadPositions(frame_, 0);
+}
+
+void ParticleRenderer::setParticlesBehindFluid(std::size_t fluidCount, ValueRange fluidRange,
+                                               const ParticleFrame& solids) {
+  if (fluidCount + solids.size() > capacity_)
+    throw std::invalid_argument("ParticleRenderer: " + std::to_string(fluidCount) +
+                                " fluid particles and " + std::to_string(solids.size()) +
+                                " others do not fit the " + std::to_string(capacity_) +
+                                " reserved");
+  fluidOnGpu_ = fluidCount;
+  fluidOnGpuRange_ = fluidRange;
+  frame_ = solids;
+  uploadPositions(frame_, fluidCount);
 }
 
 void ParticleRenderer::uploadColours(const DrawSettings& settings, const OrbitCamera& camera) {
-  range_ = settings.range ? *settings.range : rangeFromFrames({&frame_}, settings.colour);
+  if (settings.range)
+    range_ = *settings.range;
+  else
+    range_ = fluidOnGpu_ > 0 ? fluidOnGpuRange_ : rangeFromFrames({&frame_}, settings.colour);
   ParticleFilter show = settings.show;
   if (settings.cutaway)
     show.cut = CutPlane{camera.target, normalize(subtract(camera.target, camera.eye()))};
   const std::vector<std::uint8_t> rgba = particleColours(frame_, settings.colour, range_, show);
+  if (rgba.empty()) return;
   glBindBuffer(GL_ARRAY_BUFFER, colourBuffer_);
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(rgba.size()), rgba.data(), GL_DYNAMIC_DRAW);
+  glBufferSubData(GL_ARRAY_BUFFER, GLintptr(4 * fluidOnGpu_), GLsizeiptr(rgba.size()), rgba.data());
 }
 
 void ParticleRenderer::draw(const OrbitCamera& camera, const DrawSettings& settings, int width,
@@ -112,7 +145,7 @@ void ParticleRenderer::draw(const OrbitCamera& camera, const DrawSettings& setti
               lineColour(settings.background, 0.10f));
   if (settings.showDomain || settings.showGrid)
     drawLines(boxEdges(settings.domain), viewProjection, lineColour(settings.background, 0.35f));
-  if (!frame_.id.empty()) {
+  if (particleCount() > 0) {
     uploadColours(settings, camera);
     drawParticles(view, projection, settings, height);
   }
@@ -135,7 +168,7 @@ void ParticleRenderer::drawParticles(const Mat4f& view, const Mat4f& projection,
   glEnable(GL_PROGRAM_POINT_SIZE);
   glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   glBindVertexArray(particleVao_);
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(frame_.size()));
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(particleCount()));
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
 }
 

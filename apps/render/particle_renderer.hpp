@@ -43,10 +43,19 @@ class ParticleRenderer {
 
   // Uploads positions now; colours follow at the next draw, for its settings.
   void setParticles(const ParticleFrame& frame);
+  // Room for `particles` in the position and colour buffers. Growing replaces their storage,
+  // so a CUDA registration of them must be made again.
+  void reserve(std::size_t particles);
+  // For a fluid written on the GPU (CUDA–OpenGL interop): the first `fluidCount` entries of
+  // positionBuffer() and colourBuffer() already hold the fluid, coloured through a
+  // FluidColourTable over `fluidRange`; `solids` (walls and objects, no fluid) are uploaded
+  // from the host behind them, and coloured at the next draw.
+  void setParticlesBehindFluid(std::size_t fluidCount, ValueRange fluidRange,
+                               const ParticleFrame& solids);
   // Clears and draws into the bound framebuffer's (0, 0, width, height).
   void draw(const OrbitCamera& camera, const DrawSettings& settings, int width, int height);
 
-  std::size_t particleCount() const { return frame_.size(); }
+  std::size_t particleCount() const { return fluidOnGpu_ + frame_.size(); }
   // The range the last draw mapped colours over (its settings' or the particles').
   ValueRange rangeUsed() const { return range_; }
 
@@ -58,9 +67,12 @@ class ParticleRenderer {
     std::size_t capacity = 0;
   };
   GlBuffer positionBuffer() const { return {positionBuffer_, capacity_}; }
+  // RGBA8 per particle, alpha 0 for one not shown.
+  GlBuffer colourBuffer() const { return {colourBuffer_, capacity_}; }
 
  private:
   struct Programs;
+  void uploadPositions(const ParticleFrame& frame, std::size_t offset);
   void uploadColours(const DrawSettings& settings, const OrbitCamera& camera);
   void drawParticles(const Mat4f& view, const Mat4f& projection, const DrawSettings& settings,
                      int height);
@@ -72,6 +84,8 @@ class ParticleRenderer {
   unsigned lineVao_ = 0, lineBuffer_ = 0;
   unsigned overlayVao_ = 0, overlayBuffer_ = 0;
   std::size_t capacity_ = 0;
+  std::size_t fluidOnGpu_ = 0;  // entries ahead of frame_'s, written on the GPU
+  ValueRange fluidOnGpuRange_;
   ParticleFrame frame_;
   ValueRange range_;
 };

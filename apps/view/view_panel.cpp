@@ -14,6 +14,9 @@ namespace {
 void figures(const Simulation& sim, const ViewerState& state) {
   const Calibration& c = sim.calibration();
   ImGui::Text("%s on %s", sim.scene().name.c_str(), sim.backendName());
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled("%s", state.fluidPath.c_str());
+  ImGui::PopTextWrapPos();
   ImGui::Text("fluid %llu   walls %llu   objects %llu", (unsigned long long)sim.fluidCount(),
               (unsigned long long)c.boundaryParticles, (unsigned long long)c.objectParticles);
   ImGui::Text("t = %.4f s   step %llu   dt = %.2e s", sim.time(),

@@ -18,6 +18,7 @@
 
 #include "camera.hpp"
 #include "colour_map.hpp"
+#include "fluid_feed.hpp"
 #include "particle_renderer.hpp"
 #include "png_writer.hpp"
 #include "probe.hpp"
@@ -205,8 +206,10 @@ void runViewer(const Scene& original, const ViewOptions& options) {
   GLFWwindow* window = owned.handle;
   ImGuiSession imgui(window);
   render::ParticleRenderer renderer;
+  FluidFeed feed(renderer, *sim);
 
   ViewerState state;
+  state.fluidPath = feed.path();
   state.draw.colour = *mode;
   state.probe = probe.present;
   state.draw.show.boundary = false;  // walls hide the fluid; b shows them
@@ -240,7 +243,7 @@ void runViewer(const Scene& original, const ViewOptions& options) {
     handleKeys(state);
     handleMouse(camera, *sim, probe, width, height, state);
     if (width > 0 && height > 0) {
-      renderer.setParticles(sim->frame(state.draw.show.boundary));
+      feed.feed(*sim, state.draw);
       renderer.draw(camera, state.draw, width, height);
     }
     drawPanel(*sim, state, renderer.rangeUsed());

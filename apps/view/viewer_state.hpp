@@ -15,6 +15,7 @@ struct ViewerState {
   bool probe = false;           // the scene has the sphere the mouse drags
   render::DrawSettings draw;
   std::string message;     // the last error, shown in the panel until the next reset
+  std::string fluidPath;   // how the fluid reaches the renderer (FluidFeed::path)
   LiveParameters editing;  // the panel's fields while the user edits them
 
   // Smoothed over the last frames, for steady figures.

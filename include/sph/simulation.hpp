@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sph/fluid_draw.hpp"
 #include "sph/frame.hpp"
 #include "sph/scene.hpp"
 #include "sph/stats.hpp"
@@ -155,6 +156,18 @@ class Simulation {
   ParticleFrame frame(bool includeBoundary = true) const;
   // The static wall particles alone (they never move: runs write them once).
   ParticleFrame boundaryFrame() const;
+  // The walls (if asked) and the objects, without the fluid: what a renderer draws beside a
+  // fluid it takes through writeFluidForDrawing.
+  ParticleFrame solidFrame(bool includeBoundary) const;
+
+  // Writes the fluid particles, in the engine's order (not by id), into `target`'s arrays in
+  // the backend's own memory, and returns how many: device pointers on the CUDA backend (an
+  // OpenGL buffer mapped through CUDA–OpenGL interop, so drawing needs no host copy), host
+  // pointers on the CPU. On the GPU the writes are queued on the default stream; unmapping the
+  // buffers or synchronising orders them before a draw. Throws std::invalid_argument when
+  // target.capacity < fluidCount(), a needed pointer is null or the positions are not 16-byte
+  // aligned; nothing is written then.
+  std::size_t writeFluidForDrawing(const FluidDrawTarget& target) const;
 
  private:
   struct Impl;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fluid/stages.hpp"
+#include "fluid/write_for_drawing.hpp"
 #include "interaction/stages.hpp"
 #include "sim/fluid_engine.hpp"
 
@@ -144,6 +145,11 @@ class EngineImpl final : public FluidEngine {
     B::download(boundary_.id, w.id.data(), boundary_.count);
     B::download(boundary_.position, w.position.data(), boundary_.count);
     return w;
+  }
+
+  void writeForDrawing(const FluidDrawTarget& target, float surfaceThreshold) const override {
+    fluid::writeForDrawing(fluid_, reinterpret_cast<Vec4*>(target.position), target.value,
+                           target.id, target.quantity, surfaceThreshold);
   }
 
   void setParameters(const fluid::FluidParameters& params) override { params_ = params; }

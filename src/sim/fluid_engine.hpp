@@ -11,6 +11,7 @@
 #include "fluid/parameters.hpp"
 #include "interaction/object_particles.hpp"
 #include "sph/core/vec.hpp"
+#include "sph/fluid_draw.hpp"
 #include "sph/object_exchange.hpp"
 
 namespace sph::sim {
@@ -83,6 +84,9 @@ class FluidEngine {
   // them to pinned host memory while the next steps run; the CPU copies at once.
   virtual std::unique_ptr<PendingParticles> beginDownload() const = 0;
   virtual HostWalls downloadWalls() const = 0;
+  // The fluid into arrays in this backend's memory, for a renderer (target checked by the
+  // caller). On the GPU the writes are queued on the default stream.
+  virtual void writeForDrawing(const FluidDrawTarget& target, float surfaceThreshold) const = 0;
   // x, y, z, 0 per fluid particle id; empty removes the external accelerations.
   virtual void setExternalAcceleration(const std::vector<Vec4>& byId) = 0;
   // New values for the next steps (Simulation::setLiveParameters); the particles stay.

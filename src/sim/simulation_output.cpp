@@ -1,7 +1,10 @@
 // What a Simulation reports: statistics and frames, from a host copy of the particles, made
 // on demand at output times.
 #include <algorithm>
+#include <cstdint>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "backend/cpu_parallel.hpp"
 #include "sim/simulation_impl.hpp"
@@ -73,6 +76,16 @@ void appendObjects(FrameBuilder& b, const objects::ParticleState& p, std::uint64
     b.push(static_cast<std::uint32_t>(firstId + k), makeVec4(p.position[k]),
            makeVec4(p.velocity[k]), restDensity, 0.0f, ParticleKind::Object, p.object[k],
            p.surface[k] != 0);
+  }
+}
+
+// The walls (if asked), then the objects as their engine has them now.
+void appendSolids(FrameBuilder& b, const sim::FluidEngine& engine, const sim::ObjectRunner* objects,
+                  std::uint64_t initialFluid, float restDensity, bool includeBoundary) {
+  if (includeBoundary) appendWalls(b, engine.downloadWalls(), initialFluid, restDensity);
+  if (objects) {
+    objects->wait();
+    appendObjects(b, objects->world().particles(), initialFluid + engine.wallCount(), restDensity);
   }
 }
 
@@ -234,14 +247,37 @@ ParticleFrame Simulation::frame(bool includeBoundary) const {
   b.reserve(f.id.size() + (includeBoundary ? s.engine->wallCount() : 0) +
             s.calibration.objectParticles);
   appendFluid(b, f, s.initialFluid, s.params.surfaceThreshold);
-  if (includeBoundary)
-    appendWalls(b, s.engine->downloadWalls(), s.initialFluid, s.params.restDensity);
-  if (s.objects) {
-    s.objects->wait();
-    appendObjects(b, s.objects->world().particles(), s.initialFluid + s.engine->wallCount(),
-                  s.params.restDensity);
-  }
+  appendSolids(b, *s.engine, s.objects.get(), s.initialFluid, s.params.restDensity,
+               includeBoundary);
   return std::move(b.out);
+}
+
+ParticleFrame Simulation::solidFrame(bool includeBoundary) const {
+  const Impl& s = *impl_;
+  FrameBuilder b;
+  b.out.time = s.time;
+  b.out.step = s.steps;
+  b.reserve((includeBoundary ? s.engine->wallCount() : 0) + s.calibration.objectParticles);
+  appendSolids(b, *s.engine, s.objects.get(), s.initialFluid, s.params.restDensity,
+               includeBoundary);
+  return std::move(b.out);
+}
+
+std::size_t Simulation::writeFluidForDrawing(const FluidDrawTarget& target) const {
+  const Impl& s = *impl_;
+  const std::size_t n = s.engine->fluidCount();
+  if (target.capacity < n)
+    throw std::invalid_argument("writeFluidForDrawing: room for " +
+                                std::to_string(target.capacity) + " particles, the fluid has " +
+                                std::to_string(n));
+  if (!target.position) throw std::invalid_argument("writeFluidForDrawing: no position array");
+  if (reinterpret_cast<std::uintptr_t>(target.position) % alignof(Vec4) != 0)
+    throw std::invalid_argument("writeFluidForDrawing: positions must be 16-byte aligned");
+  if (target.quantity != FluidQuantity::None && !target.value)
+    throw std::invalid_argument(
+        "writeFluidForDrawing: a quantity was asked for and no value array given");
+  s.engine->writeForDrawing(target, s.params.surfaceThreshold);
+  return n;
 }
 
 ParticleFrame Simulation::boundaryFrame() const {

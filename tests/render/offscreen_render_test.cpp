@@ -3,11 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
+#include <stdexcept>
 #include <vector>
+
+#include <epoxy/gl.h>
 
 #include "camera.hpp"
 #include "offscreen_context.hpp"
+#include "particle_colours.hpp"
 #include "particle_renderer.hpp"
 
 namespace sph::render {
@@ -164,6 +169,70 @@ TEST_F(OffscreenRender, ColourBarShowsTheMapForQuantities) {
   const Pixel top = at(0.55f), bottom = at(-0.55f);
   EXPECT_GT(top.r + top.g, 350) << "yellow at the top";
   EXPECT_GT(bottom.b, bottom.g + 30) << "violet at the bottom";
+}
+
+// The fluid written straight into the GL buffers, as CUDA–OpenGL interop does on a GPU (here
+// from the host, in another order than by id), with the solids behind it, draws the picture
+// the host path draws.
+TEST_F(OffscreenRender, FluidWrittenIntoTheBuffersDrawsAsTheHostPath) {
+  const ParticleFrame whole = knownScene();
+  ParticleFrame solids;
+  std::vector<float> fluidPositions;
+  std::vector<float> fluidDensities;
+  for (std::size_t i = whole.size(); i-- > 0;) {  // reversed
+    if (whole.kind[i] != std::uint8_t(ParticleKind::Fluid)) continue;
+    fluidPositions.insert(fluidPositions.end(), &whole.position[3 * i], &whole.position[3 * i + 3]);
+    fluidPositions.push_back(1.0f);
+    fluidDensities.push_back(990.0f + float(i % 21));
+  }
+  for (std::size_t i = 0; i < whole.size(); ++i)
+    if (whole.kind[i] != std::uint8_t(ParticleKind::Fluid))
+      addParticle(solids,
+                  {whole.position[3 * i], whole.position[3 * i + 1], whole.position[3 * i + 2]},
+                  ParticleKind(whole.kind[i]), whole.object[i]);
+  ParticleFrame byHost = whole;
+  std::size_t f = fluidDensities.size();
+  for (std::size_t i = 0; i < whole.size(); ++i)
+    if (whole.kind[i] == std::uint8_t(ParticleKind::Fluid)) byHost.density[i] = fluidDensities[--f];
+
+  settings_.colour = ColourMode::Density;
+  settings_.range = ValueRange{990.0f, 1010.0f};
+  const std::vector<std::uint8_t> expected = render(byHost);
+
+  const std::size_t fluid = fluidDensities.size();
+  renderer_->reserve(whole.size());
+  const FluidColourTable table = fluidColourTable(settings_.colour, *settings_.range, true);
+  std::vector<std::uint8_t> rgba(4 * fluid);
+  colourFromTable(table, fluidDensities.data(), fluid, rgba.data());
+  glBindBuffer(GL_ARRAY_BUFFER, renderer_->positionBuffer().name);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(fluidPositions.size() * sizeof(float)),
+                  fluidPositions.data());
+  glBindBuffer(GL_ARRAY_BUFFER, renderer_->colourBuffer().name);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(rgba.size()), rgba.data());
+  renderer_->setParticlesBehindFluid(fluid, *settings_.range, solids);
+  EXPECT_EQ(renderer_->particleCount(), whole.size());
+  context_->bindForDrawing();
+  renderer_->draw(camera_, settings_, kWidth, kHeight);
+  context_->resolveForReading();
+  const std::vector<std::uint8_t> drawn = readRgbPixels(kWidth, kHeight);
+
+  std::size_t covered = 0, differing = 0;
+  for (std::size_t at = 0; at < drawn.size(); at += 3) {
+    if (!isBackground({expected[at], expected[at + 1], expected[at + 2]})) ++covered;
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(int(drawn[at + c]) - int(expected[at + c])) > 3) {
+        ++differing;
+        break;
+      }
+  }
+  EXPECT_GT(covered, std::size_t(kWidth * kHeight) / 20);
+  // Equal depths may resolve the other way where spheres touch: a few edge pixels.
+  EXPECT_LT(differing, covered / 50) << differing << " of " << covered << " covered pixels differ";
+  // The object behind the fluid is still there, in its own colour.
+  const Pixel object = pixelAt(drawn, {0.8f, 0.2f, 0.5f});
+  EXPECT_GT(object.r, object.b + 40);
+  // More than the reserved room is refused.
+  EXPECT_THROW(renderer_->setParticlesBehindFluid(fluid + 1, {}, whole), std::invalid_argument);
 }
 
 TEST_F(OffscreenRender, PositionBufferHoldsFourFloatsPerParticle) {
