@@ -205,8 +205,9 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
                              const FloatBatch r2 = dot(rij, rij);
                              const auto near = lane < FloatBatch(float(end - j)) && r2 < h2;
                              sum += kernels.W(select(near, r2, h2));
+                             // No branch on whether any lane passed: it would be mispredicted
+                             // often, and appending none costs a store.
                              const unsigned bits = maskBits(near && FloatBatch(float(j)) != self);
-                             if (bits == 0) continue;
                              if (count <= kMaxListed)
                                count += appendLanes(found + count, j, bits);
                              else

@@ -1,6 +1,8 @@
 // Stage: all forces in one pass (seed 1 Algorithm 2): pressure, viscosity, surface tension,
 // gravity and external accelerations. Reads position, velocity, pressureState, the neighbour
-// lists, the walls and externalById. Writes acceleration (w: |∇c|).
+// lists, the walls and externalById. Writes acceleration (w: 0; |∇c| for the surface flags is
+// measured when a frame is taken, measure_surface.hpp). The colour field is summed only for
+// surface tension, which needs it: it is a fifth of the pass.
 #pragma once
 
 #include "fluid/forces_batched.hpp"
@@ -75,9 +77,11 @@ void forcePass(FluidParticles<B>& fluid, const Grid<B>& grid, const BoundaryPart
             a += mullerViscosityAcceleration(p.viscosity, p.mass, rhoI, sj.w, vij,
                                              kernels.laplacian(r));
           }
-          const float volumeJ = p.mass * sj.y;  // seed 1 eqs. 11-12 with C_j = 1
-          colourGradient += rij * (volumeJ * kernels.colourGradFactor(r));
-          if (Options::surfaceTension) colourLaplacian += volumeJ * kernels.colourLaplacian(r);
+          if (Options::surfaceTension) {
+            const float volumeJ = p.mass * sj.y;  // seed 1 eqs. 11-12 with C_j = 1
+            colourGradient += rij * (volumeJ * kernels.colourGradFactor(r));
+            colourLaplacian += volumeJ * kernels.colourLaplacian(r);
+          }
         };
         const std::uint32_t count = neighborCount[i];
         if (count != kNeighborOverflow) {
@@ -109,16 +113,19 @@ void forcePass(FluidParticles<B>& fluid, const Grid<B>& grid, const BoundaryPart
               a += friction * p.wallFriction;
             }
             // Walls are not empty space: fluid against a wall is not free surface.
-            colourGradient += rib * (volumeB * kernels.colourGradFactor(r));
+            if (Options::surfaceTension)
+              colourGradient += rib * (volumeB * kernels.colourGradFactor(r));
           });
         }
 
-        const float normalLength = length(colourGradient);
-        if (Options::surfaceTension && normalLength > p.surfaceThreshold) {
-          // Müller et al. 2003 eq. 19: f = -σ ∇²c n/|n|, as an acceleration.
-          a -= colourGradient * (p.surfaceTension * colourLaplacian / (normalLength * rhoI));
+        if (Options::surfaceTension) {
+          const float normalLength = length(colourGradient);
+          if (normalLength > p.surfaceThreshold) {
+            // Müller et al. 2003 eq. 19: f = -σ ∇²c n/|n|, as an acceleration.
+            a -= colourGradient * (p.surfaceTension * colourLaplacian / (normalLength * rhoI));
+          }
         }
-        acceleration[i] = makeVec4(a, normalLength);
+        acceleration[i] = makeVec4(a, 0.0f);
       });
 }
 

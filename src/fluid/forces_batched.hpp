@@ -2,7 +2,8 @@
 // batched density pass made (padded to whole batches), or, for a particle with too many
 // neighbours to list, loaded from the contiguous rows of cells. The same formulas as forces.hpp
 // (core/momentum.hpp, core/kernels.hpp, written once for a float and for a batch); lanes that
-// are not neighbours get zero kernel factors.
+// are not neighbours get zero kernel factors. As there, the colour field only for surface
+// tension.
 #pragma once
 
 #if !defined(__CUDACC__)
@@ -113,10 +114,11 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
         a += mullerViscosityAcceleration(viscosity, mass, rhoI, rhoJ, vij,
                                          select(near, kernels.laplacian(r), zero));
       }
-      const FloatBatch volumeJ = mass * inverseDensityJ;  // seed 1 eqs. 11-12, C_j = 1
-      colourGradient += rij * (volumeJ * select(near, kernels.colourGradFactor(r), zero));
-      if constexpr (Options::surfaceTension)
+      if constexpr (Options::surfaceTension) {
+        const FloatBatch volumeJ = mass * inverseDensityJ;  // seed 1 eqs. 11-12, C_j = 1
+        colourGradient += rij * (volumeJ * select(near, kernels.colourGradFactor(r), zero));
         colourLaplacian += volumeJ * select(near, kernels.colourLaplacian(r), zero);
+      }
     };
 
     const std::uint32_t count = neighborCount[i];
@@ -126,7 +128,7 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
         const std::uint32_t* at = list + k;  // padded: whole batches
         FloatBatch c[8];
         gatherRecords(records, at, c);
-        addPairs({c[0], c[1], c[2]}, {c[4], c[5], c[6]}, c[3], c[7], gatherBatch(density, at),
+        addPairs({c[0], c[1], c[2]}, {c[4], c[5], c[6]}, c[3], c[7], FloatBatch(1.0f) / c[7],
                  FloatBatch::mask_type(true));
       }
     } else {
@@ -167,19 +169,22 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
                 a += friction * wallFriction;
               }
               // Walls are not empty space: fluid against a wall is not free surface.
-              colourGradient += rib * (volumeB * select(near, kernels.colourGradFactor(r), zero));
+              if constexpr (Options::surfaceTension)
+                colourGradient += rib * (volumeB * select(near, kernels.colourGradFactor(r), zero));
             }
           });
     }
 
     Vec3 ai = (external ? p.gravity + xyz(external[id[i]]) : p.gravity) + sumLanes(a);
-    const Vec3 gradient = sumLanes(colourGradient);
-    const float normalLength = length(gradient);
-    if (Options::surfaceTension && normalLength > p.surfaceThreshold) {
-      // Müller et al. 2003 eq. 19: f = -σ ∇²c n/|n|, as an acceleration.
-      ai -= gradient * (p.surfaceTension * stdx::reduce(colourLaplacian) / (normalLength * si.w));
+    if constexpr (Options::surfaceTension) {
+      const Vec3 gradient = sumLanes(colourGradient);
+      const float normalLength = length(gradient);
+      if (normalLength > p.surfaceThreshold) {
+        // Müller et al. 2003 eq. 19: f = -σ ∇²c n/|n|, as an acceleration.
+        ai -= gradient * (p.surfaceTension * stdx::reduce(colourLaplacian) / (normalLength * si.w));
+      }
     }
-    acceleration[i] = makeVec4(ai, normalLength);
+    acceleration[i] = makeVec4(ai, 0.0f);
   });
 }
 

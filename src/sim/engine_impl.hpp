@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "fluid/measure_surface.hpp"
 #include "fluid/stages.hpp"
 #include "fluid/write_for_drawing.hpp"
 #include "interaction/stages.hpp"
@@ -93,6 +94,7 @@ class EngineImpl final : public FluidEngine {
     return fluid::measureStep(fluid_, params_.restDensity);
   }
   std::size_t integrate(float dt) override { return fluid::integrate(fluid_, dt, domain_); }
+  void measureSurface() override { fluid::measureSurface(fluid_, grid_, boundary_, params_); }
 
   float setObjectSurface(const ObjectSurface& surface,
                          const interaction::InteractionParameters& params) override {

@@ -65,6 +65,9 @@ class FluidEngine {
   virtual void computeForces() = 0;
   virtual fluid::StepMeasures measureStep() = 0;
   virtual std::size_t integrate(float dt) = 0;  // returns the particles clamped
+  // Outside the step: |∇c| at the present positions into acceleration.w (the surface flags),
+  // from the last density pass's neighbours.
+  virtual void measureSurface() = 0;
 
   // The interaction with objects (seed 1 §7). A new publication of the objects' surface
   // particles; returns their largest speed.

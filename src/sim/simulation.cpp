@@ -18,8 +18,10 @@ void Simulation::step(double until) {
   sim::FluidEngine& engine = *s.engine;
   StepProfile& profile = s.profile;
   using detail::timedMs;
+  s.surfaceMeasured = false;
   profile.buildGrid = timedMs([&] { s.removed += engine.buildGrid(); });
   profile.densityPressure = timedMs([&] { engine.computeDensityAndPressure(); });
+  s.neighboursListed = true;
   profile.forces = timedMs([&] { engine.computeForces(); });
   profile.interaction = timedMs([&] { s.interact(); });
   profile.timeStep = timedMs([&] { s.dt = s.chooseTimeStep(until); });

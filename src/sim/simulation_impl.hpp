@@ -48,6 +48,14 @@ struct Simulation::Impl {
   std::uint64_t removed = 0;
   std::uint64_t clamped = 0;
   std::uint64_t initialFluid = 0;
+  // The surface flags (|∇c| in acceleration.w) are measured when a frame or statistics want
+  // them, not in every step: the step needs them only for surface tension.
+  bool neighboursListed = false;  // a density pass has run: the surface can be measured
+  mutable bool surfaceMeasured = false;
+  void measureSurfaceIfStale() const {
+    if (!surfaceMeasured && neighboursListed) engine->measureSurface();
+    surfaceMeasured = true;
+  }
   // The interaction with objects; objects is null when the scene has none.
   std::unique_ptr<sim::ObjectRunner> objects;
   interaction::InteractionParameters interactionParams{};

@@ -216,6 +216,7 @@ FrameStats Simulation::Impl::statsWithoutParticles(const Simulation& sim) const 
 FrameStats Simulation::stats() const {
   const Impl& s = *impl_;
   FrameStats out = s.statsWithoutParticles(*this);
+  s.measureSurfaceIfStale();
   addParticleSums(out, s.engine->download(), s.params.restDensity, s.params.surfaceThreshold,
                   s.params.mass);
   return out;
@@ -224,6 +225,7 @@ FrameStats Simulation::stats() const {
 FrameCapture Simulation::capture() const {
   const Impl& s = *impl_;
   auto c = std::make_unique<FrameCapture::Impl>();
+  s.measureSurfaceIfStale();
   c->fluid = s.engine->beginDownload();
   c->stats = s.statsWithoutParticles(*this);
   if (s.objects) {
@@ -240,6 +242,7 @@ FrameCapture Simulation::capture() const {
 
 ParticleFrame Simulation::frame(bool includeBoundary) const {
   const Impl& s = *impl_;
+  s.measureSurfaceIfStale();
   const sim::HostParticles f = s.engine->download();
   FrameBuilder b;
   b.out.time = s.time;
@@ -276,6 +279,7 @@ std::size_t Simulation::writeFluidForDrawing(const FluidDrawTarget& target) cons
   if (target.quantity != FluidQuantity::None && !target.value)
     throw std::invalid_argument(
         "writeFluidForDrawing: a quantity was asked for and no value array given");
+  if (target.quantity == FluidQuantity::Surface) s.measureSurfaceIfStale();
   s.engine->writeForDrawing(target, s.params.surfaceThreshold);
   return n;
 }
