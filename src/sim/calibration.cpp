@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 #include "sim/sampling.hpp"
@@ -205,6 +206,21 @@ fluid::DomainParameters domainParameters(const Scene& scene) {
   };
   return fluid::DomainParameters{v(d.box.min), v(d.box.max), d.outside == OutsidePolicy::Clamp,
                                  d.dampedBox, static_cast<float>(d.damping)};
+}
+
+EngineSetup engineSetup(const Scene& scene, const Calibration& calibration) {
+  EngineSetup setup;
+  setup.params = fluidParameters(scene, calibration);
+  setup.domain = domainParameters(scene);
+  for (const auto& tank : scene.walls) {
+    const auto points = sampleTank(tank, scene.fluid.spacing, scene.gravity);
+    setup.walls.insert(setup.walls.end(), points.begin(), points.end());
+  }
+  // Twice the neighbours of a particle in the initial lattice leaves room for compression.
+  const double ratio = scene.fluid.supportRatio;
+  setup.neighborStride =
+      static_cast<std::uint32_t>(std::ceil(2.0 * 4.0 / 3.0 * kPi * ratio * ratio * ratio));
+  return setup;
 }
 
 }  // namespace sph::sim

@@ -4,6 +4,7 @@
 #include "fluid/parameters.hpp"
 #include "interaction/object_particles.hpp"
 #include "objects/object_world.hpp"
+#include "sim/fluid_engine.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::sim {
@@ -15,6 +16,9 @@ Calibration calibrate(const Scene& scene);
 
 fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& calibration);
 fluid::DomainParameters domainParameters(const Scene& scene);
+// An engine's setup for the scene, all but the fluid particles: the parameters, the domain, the
+// walls' particles and room for each particle's neighbour list. The caller adds the fluid.
+EngineSetup engineSetup(const Scene& scene, const Calibration& calibration);
 interaction::InteractionParameters interactionParameters(const Scene& scene,
                                                          const Calibration& calibration);
 objects::WorldSettings worldSettings(const Scene& scene, const Calibration& calibration);

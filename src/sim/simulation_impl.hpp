@@ -68,13 +68,9 @@ struct Simulation::Impl {
   Impl(const Scene& s, const SimulationOptions& options) : scene(s) {
     backend::requireCompiledInstructionSet();
     calibration = sim::calibrate(scene);
-    params = sim::fluidParameters(scene, calibration);
+    sim::EngineSetup setup = sim::engineSetup(scene, calibration);
+    params = setup.params;
     dt = calibration.initialDt;
-    sim::EngineSetup setup;
-    for (const auto& tank : scene.walls) {
-      const auto points = sim::sampleTank(tank, scene.fluid.spacing, scene.gravity);
-      setup.walls.insert(setup.walls.end(), points.begin(), points.end());
-    }
     std::optional<objects::ObjectWorld> world;
     if (!scene.objects.empty()) {
       objects::WorldSettings settings = sim::worldSettings(scene, calibration);
@@ -85,13 +81,7 @@ struct Simulation::Impl {
       checkContactReach(*world);
     }
 
-    setup.params = params;
-    setup.domain = sim::domainParameters(scene);
     sampleFluid(setup, world ? &*world : nullptr);
-    // Twice the neighbours of a particle in the initial lattice leaves room for compression.
-    const double ratio = scene.fluid.supportRatio;
-    setup.neighborStride =
-        static_cast<std::uint32_t>(std::ceil(2.0 * 4.0 / 3.0 * kPi * ratio * ratio * ratio));
     initialFluid = setup.positions.size();
     engine =
         useCuda(options) ? sim::makeCudaEngine(setup, options.device) : sim::makeCpuEngine(setup);
