@@ -27,8 +27,12 @@ struct Bounds {
 SPH_HD Bounds merge(const Bounds& a, const Bounds& b) {
   if (!a.any) return b;
   if (!b.any) return a;
-  return Bounds{Vec3{fminf(a.lo.x, b.lo.x), fminf(a.lo.y, b.lo.y), fminf(a.lo.z, b.lo.z)},
-                Vec3{fmaxf(a.hi.x, b.hi.x), fmaxf(a.hi.y, b.hi.y), fmaxf(a.hi.z, b.hi.z)}, true};
+  // Comparisons, not fminf: the positions here are inside the domain, so never NaN, and g++
+  // calls the library for fminf.
+  const auto lower = [](float u, float v) { return u < v ? u : v; };
+  const auto higher = [](float u, float v) { return u > v ? u : v; };
+  return Bounds{Vec3{lower(a.lo.x, b.lo.x), lower(a.lo.y, b.lo.y), lower(a.lo.z, b.lo.z)},
+                Vec3{higher(a.hi.x, b.hi.x), higher(a.hi.y, b.hi.y), higher(a.hi.z, b.hi.z)}, true};
 }
 
 }  // namespace detail

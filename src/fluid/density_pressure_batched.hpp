@@ -197,22 +197,29 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
     // where a batch may be written past the last, then copied to the particle's list.
     std::uint32_t found[kMaxListed + kBatchPadding];
     std::uint32_t count = 0;
-    const FloatBatch self = FloatBatch(float(i)) - lane;
+    // One batch of candidates from j on: the density sum, and the neighbours appended to the
+    // list. No branch on whether any lane passed: it would be mispredicted often, and
+    // appending none costs a store.
+    const auto scan = [&](std::uint32_t j, const FloatBatch::mask_type& candidates)
+                          SPH_BATCH_INLINE_LAMBDA {
+                            const BatchVec3 rij = xi - loadBatch(x, y, z, j);
+                            const FloatBatch r2 = dot(rij, rij);
+                            auto near = candidates && r2 < h2;
+                            sum += kernels.W(select(near, r2, h2));
+                            // The particle itself is in one batch of one row: a scalar test finds
+                            // that batch.
+                            if (j <= i && i < j + kBatch)
+                              near = near && lane != FloatBatch(float(i - j));
+                            const unsigned bits = maskBits(near);
+                            if (count <= kMaxListed)
+                              count += appendLanes(found + count, j, bits);
+                            else
+                              count += std::uint32_t(__builtin_popcount(bits));
+                          };
     forEachNeighborRange(spec, cellStart, Vec3{x[i], y[i], z[i]},
                          [&](std::uint32_t begin, std::uint32_t end) {
-                           for (std::uint32_t j = begin; j < end; j += kBatch) {
-                             const BatchVec3 rij = xi - loadBatch(x, y, z, j);
-                             const FloatBatch r2 = dot(rij, rij);
-                             const auto near = lane < FloatBatch(float(end - j)) && r2 < h2;
-                             sum += kernels.W(select(near, r2, h2));
-                             // No branch on whether any lane passed: it would be mispredicted
-                             // often, and appending none costs a store.
-                             const unsigned bits = maskBits(near && FloatBatch(float(j)) != self);
-                             if (count <= kMaxListed)
-                               count += appendLanes(found + count, j, bits);
-                             else
-                               count += std::uint32_t(__builtin_popcount(bits));
-                           }
+                           for (std::uint32_t j = begin; j < end; j += kBatch)
+                             scan(j, lane < FloatBatch(float(end - j)));
                          });
     std::uint32_t* list = neighbors + i * stride;
     if (count <= kMaxListed && paddedLength(count) <= stride) {

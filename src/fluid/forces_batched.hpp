@@ -29,7 +29,7 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
   float* records = fluid.batchRecords.data();
   const float* pressureTermSource =
       kSymmetric ? fluid.batchPOverRho2.data() : fluid.batchPressure.data();
-  const float* inverseDensitySource = fluid.batchInverseDensity.data();
+  const float* densitySource = fluid.batchDensity.data();
   const float* px = fluid.batchX.data();
   const float* py = fluid.batchY.data();
   const float* pz = fluid.batchZ.data();
@@ -48,7 +48,7 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
     r[4] = real ? velocity[i].x : 0.0f;
     r[5] = real ? velocity[i].y : 0.0f;
     r[6] = real ? velocity[i].z : 0.0f;
-    r[7] = inverseDensitySource[i];
+    r[7] = densitySource[i];
   });
 
   const GridSpec spec = grid.spec;
@@ -61,7 +61,6 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
   // What the pressure term reads of a neighbour: p/ρ² (symmetric form) or p (the paper's).
   const float* pressureTermJ =
       kSymmetric ? fluid.batchPOverRho2.data() : fluid.batchPressure.data();
-  const float* inverseDensity = fluid.batchInverseDensity.data();
   const float* density = fluid.batchDensity.data();
   const float* wx = boundary.batchX.data();
   const float* wy = boundary.batchY.data();
@@ -91,9 +90,14 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
 
     // The pair terms of a batch of fluid neighbours; lanes off `candidates`, or out of reach,
     // add nothing.
+    // 1/ρ_j is divided out only where a formula reads it (the paper's pressure form, surface
+    // tension): the divider is what a batch waits on most.
+    constexpr bool kReadsInverseDensity = !kSymmetric || Options::surfaceTension;
     const auto addPairs = [&](const BatchVec3& xj, const BatchVec3& vj,
-                              const FloatBatch& pressureTerm, const FloatBatch& inverseDensityJ,
-                              const FloatBatch& rhoJ, const FloatBatch::mask_type& candidates) {
+                              const FloatBatch& pressureTerm, const FloatBatch& rhoJ,
+                              const FloatBatch::mask_type& candidates) SPH_BATCH_INLINE_LAMBDA {
+      FloatBatch inverseDensityJ(0.0f);
+      if constexpr (kReadsInverseDensity) inverseDensityJ = FloatBatch(1.0f) / rhoJ;
       const BatchVec3 rij = xi - xj;
       const FloatBatch r2 = dot(rij, rij);
       const auto near = candidates && r2 < h2;
@@ -128,8 +132,7 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
         const std::uint32_t* at = list + k;  // padded: whole batches
         FloatBatch c[8];
         gatherRecords(records, at, c);
-        addPairs({c[0], c[1], c[2]}, {c[4], c[5], c[6]}, c[3], c[7], FloatBatch(1.0f) / c[7],
-                 FloatBatch::mask_type(true));
+        addPairs({c[0], c[1], c[2]}, {c[4], c[5], c[6]}, c[3], c[7], FloatBatch::mask_type(true));
       }
     } else {
       const FloatBatch lane = laneNumbers();
@@ -137,8 +140,7 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
         for (std::uint32_t j = begin; j < end; j += kBatch) {
           const FloatBatch offset = lane + FloatBatch(float(j)) - FloatBatch(float(i));
           addPairs(loadBatch(x, y, z, j), loadBatch(vx, vy, vz, j), loadBatch(pressureTermJ, j),
-                   loadBatch(inverseDensity, j), loadBatch(density, j),
-                   lane < FloatBatch(float(end - j)) && offset != zero);
+                   loadBatch(density, j), lane < FloatBatch(float(end - j)) && offset != zero);
         }
       });
     }

@@ -52,7 +52,7 @@ struct FluidParticles {
   // pressureState split: p/ρ², 1/ρ, p, ρ (written by the density pass)
   Buffer<float> batchPOverRho2, batchInverseDensity, batchPressure, batchDensity;
   // What the force pass reads of a listed neighbour, 8 floats a particle, so that 8 neighbours
-  // load as 8 rows and transpose into batches: x, y, z, pressure term, vx, vy, vz, 1/ρ.
+  // load as 8 rows and transpose into batches: x, y, z, pressure term, vx, vy, vz, ρ.
   Buffer<float> batchRecords;
 };
 
