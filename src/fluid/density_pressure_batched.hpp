@@ -86,12 +86,6 @@ inline void gatherRecords(const float* records, const std::uint32_t* at, FloatBa
     columns[c] = FloatBatch([&](auto lane) { return records[8 * std::size_t(at[lane]) + c]; });
 }
 
-// from[at[0]], from[at[1]], ...: a batch of the particles a neighbour list names. (AVX2's
-// gather instruction measured slower here than these loads.)
-inline FloatBatch gatherBatch(const float* from, const std::uint32_t* at) {
-  return FloatBatch([&](auto lane) { return from[at[lane]]; });
-}
-
 // 0, 1, 2, ...: lane k of a load at j holds particle j + k.
 inline FloatBatch laneNumbers() {
   return FloatBatch([](auto k) { return float(k); });
@@ -154,7 +148,7 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
   // Far away: the padding never passes a distance test.
   padArrays(n, 1e30f, {&fluid.batchX, &fluid.batchY, &fluid.batchZ});
   // No pressure and no volume, and a density to divide by: padding lanes add exactly nothing.
-  padArrays(n, 0.0f, {&fluid.batchPOverRho2, &fluid.batchInverseDensity, &fluid.batchPressure});
+  padArrays(n, 0.0f, {&fluid.batchPOverRho2, &fluid.batchPressure});
   padArrays(n, 1.0f, {&fluid.batchDensity});
   float* x = fluid.batchX.data();
   float* y = fluid.batchY.data();
@@ -178,7 +172,6 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
   float* pressure = fluid.pressure.data();
   Vec4* state = fluid.pressureState.data();
   float* stateA = fluid.batchPOverRho2.data();
-  float* stateB = fluid.batchInverseDensity.data();
   float* stateC = fluid.batchPressure.data();
   float* stateD = fluid.batchDensity.data();
   const FluidParameters p = params;
@@ -248,7 +241,6 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
     const Vec4 s{pressureOverDensitySquared(pi, rho), 1.0f / rho, pi, rho};
     state[i] = s;
     stateA[i] = s.x;
-    stateB[i] = s.y;
     stateC[i] = s.z;
     stateD[i] = s.w;
   });

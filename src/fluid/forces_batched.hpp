@@ -90,8 +90,7 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
 
     // The pair terms of a batch of fluid neighbours; lanes off `candidates`, or out of reach,
     // add nothing.
-    // 1/ρ_j is divided out only where a formula reads it (the paper's pressure form, surface
-    // tension): the divider is what a batch waits on most.
+    // 1/ρ_j only where a formula reads it: the paper's pressure form, surface tension.
     constexpr bool kReadsInverseDensity = !kSymmetric || Options::surfaceTension;
     const auto addPairs = [&](const BatchVec3& xj, const BatchVec3& vj,
                               const FloatBatch& pressureTerm, const FloatBatch& rhoJ,

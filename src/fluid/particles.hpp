@@ -49,8 +49,8 @@ struct FluidParticles {
   // range stays inside (n + kBatchPadding). Empty on the GPU.
   Buffer<float> batchX, batchY, batchZ;
   Buffer<float> batchVX, batchVY, batchVZ;
-  // pressureState split: p/ρ², 1/ρ, p, ρ (written by the density pass)
-  Buffer<float> batchPOverRho2, batchInverseDensity, batchPressure, batchDensity;
+  // pressureState split: p/ρ², p, ρ (written by the density pass)
+  Buffer<float> batchPOverRho2, batchPressure, batchDensity;
   // What the force pass reads of a listed neighbour, 8 floats a particle, so that 8 neighbours
   // load as 8 rows and transpose into batches: x, y, z, pressure term, vx, vy, vz, ρ.
   Buffer<float> batchRecords;
