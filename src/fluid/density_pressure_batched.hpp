@@ -147,7 +147,7 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
   const std::size_t n = fluid.count;
   // Far away: the padding never passes a distance test.
   padArrays(n, 1e30f, {&fluid.batchX, &fluid.batchY, &fluid.batchZ});
-  // No pressure and no volume, and a density to divide by: padding lanes add exactly nothing.
+  // No pressure, and a density to divide by: padding lanes, far away, add exactly nothing.
   padArrays(n, 0.0f, {&fluid.batchPOverRho2, &fluid.batchPressure});
   padArrays(n, 1.0f, {&fluid.batchDensity});
   float* x = fluid.batchX.data();

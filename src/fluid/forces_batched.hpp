@@ -24,7 +24,8 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
   float* vy = fluid.batchVY.data();
   float* vz = fluid.batchVZ.data();
   const Vec4* velocity = fluid.velocity.data();
-  // Records: the padding far away, with no pressure, volume or velocity.
+  // Records: the padding far away (never within reach), with no pressure or velocity and a
+  // density of 1 to divide by.
   fluid.batchRecords.resize(8 * (n + kBatchPadding));
   float* records = fluid.batchRecords.data();
   const float* pressureTermSource =
