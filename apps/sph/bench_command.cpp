@@ -115,7 +115,7 @@ int benchCommand(const BenchOptions& options) {
     for (nlohmann::json& result : results) {
       result["backend"] = backendName;
       result["threads"] = backend::threadCount();
-      result["batched_passes"] = !gpu && backend::batchedPasses();
+      result["batched_passes"] = !gpu && where.cpuPasses == CpuPasses::Batched;
       out << result.dump() << '\n';
     }
     if (!out) {

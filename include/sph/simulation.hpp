@@ -63,9 +63,19 @@ struct StepProfile {
 
 enum class Backend { Cpu, Cuda, Auto };  // Auto: the GPU when one is present
 
+// How the CPU backend's passes take neighbours: a SIMD batch at a time (the default), or one
+// at a time through the neighbour lists as the GPU does, the reference the first is tested and
+// timed against. The CUDA backend ignores it.
+enum class CpuPasses { Batched, OneAtATime };
+
 struct SimulationOptions {
   Backend backend = Backend::Cpu;
   int device = 0;  // CUDA device index
+  CpuPasses cpuPasses = CpuPasses::Batched;
+  // The most fluid neighbours listed per particle; a particle with more finds them in the
+  // grid's cells instead, slower and with the same physics. 0: room for twice the neighbours
+  // of the initial lattice.
+  std::uint32_t neighborListLength = 0;
 };
 
 // A frame and its statistics taken at one instant (Simulation::capture) and assembled later,

@@ -13,10 +13,6 @@ int threadCount() {
 #endif
 }
 
-namespace {
-bool batched = true;
-}  // namespace
-
 void requireCompiledInstructionSet() {
 #if defined(__x86_64__) && defined(__AVX2__) && defined(__FMA__)
   if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma"))
@@ -24,14 +20,6 @@ void requireCompiledInstructionSet() {
         "this sph was compiled for AVX2 and FMA (SPH_CPU_ARCH=x86-64-v3), which this CPU "
         "lacks: rebuild with -DSPH_CPU_ARCH= (the compiler's default)");
 #endif
-}
-
-bool batchedPasses() {
-  return batched;
-}
-
-void setBatchedPasses(bool on) {
-  batched = on;
 }
 
 void setThreadCount(int n) {

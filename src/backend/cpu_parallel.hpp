@@ -15,15 +15,9 @@ namespace sph::backend {
 int threadCount();
 void setThreadCount(int n);  // n ≤ 0: all hardware threads
 
-// Whether the density and force passes take neighbours a SIMD batch at a time (the default)
-// or one at a time through neighbour lists, as the GPU does: the second is the reference the
-// first is tested and timed against.
-bool batchedPasses();
-
 // Throws std::runtime_error when this CPU lacks the instruction set the library was compiled
 // for (SPH_CPU_ARCH), instead of dying on an illegal instruction in a pass.
 void requireCompiledInstructionSet();
-void setBatchedPasses(bool on);
 
 // f(i) for every i in [0, n), in parallel.
 template <class F>

@@ -1,14 +1,12 @@
-// Stage: density with pressure in one pass (seed 1 Algorithm 1). Reads position and the walls.
-// Writes density, pressure, pressureState and the neighbour lists.
+// Stage: density with pressure in one pass (Meteer 2011, Algorithm 1). Reads position and the
+// walls. Writes density, pressure, pressureState and the neighbour lists.
 #pragma once
 
 #include "fluid/density_pressure_batched.hpp"
 #include "fluid/kernel_dispatch.hpp"
 #include "fluid/neighbors.hpp"
-#include "fluid/parameters.hpp"
+#include "fluid/pair_terms.hpp"
 #include "fluid/particles.hpp"
-#include "sph/core/eos.hpp"
-#include "sph/core/momentum.hpp"
 #include "sph/core/read_only.hpp"
 
 namespace sph::fluid {
@@ -21,8 +19,7 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
                  Kernels kernels) {
   const GridSpec spec = grid.spec;
   const std::uint32_t* cellStart = grid.cellStart.data();
-  const GridSpec wallGrid = boundary.grid;
-  const std::uint32_t* wallCellStart = boundary.cellStart.data();
+  const WallCells walls = wallCells(boundary);
   const Vec4* position = fluid.position.data();
   const Vec4* wall = boundary.position.data();
   float* density = fluid.density.data();
@@ -37,7 +34,7 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
   B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const Vec3 xi = xyz(position[i]);
-        float sum = 0.0f;  // seed 1 eq. 4, self included
+        float sum = 0.0f, wallSum = 0.0f;  // Meteer 2011, eq. 4, self included; walls' volumes
         std::uint32_t* list = neighbors + i * stride;
         std::uint32_t count = 0;
         forEachNeighbor(spec, cellStart, xi, [&](std::uint32_t j) {
@@ -48,19 +45,14 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
           if (j != i) ++count;
         });
         neighborCount[i] = count <= stride ? count : kNeighborOverflow;
-        float wallSum = 0.0f;  // Akinci et al. 2012 eq. 6: walls count with mass ρ0 ψ_b
-        if (wallCellStart != nullptr) {
-          forEachNeighbor(wallGrid, wallCellStart, xi, [&](std::uint32_t b) {
-            const Vec4 xb = readOnly(wall + b);
-            wallSum += xb.w * kernels.W(lengthSquared(xi - xyz(xb)));
-          });
-        }
-        const float rho = p.mass * sum + p.restDensity * wallSum;
-        const float pi =
-            pressureFromDensity(p.eos, rho, p.restDensity, p.stiffness, p.clampNegativePressure);
-        density[i] = rho;
-        pressure[i] = pi;
-        state[i] = Vec4{pressureOverDensitySquared(pi, rho), 1.0f / rho, pi, rho};
+        forEachWallNeighbor(walls, xi, [&](std::uint32_t b) {
+          const Vec4 xb = readOnly(wall + b);
+          wallSum += xb.w * kernels.W(lengthSquared(xi - xyz(xb)));
+        });
+        const PressureState s = pressureStateFromSums(sum, wallSum, p);
+        density[i] = s.density;
+        pressure[i] = s.pressure;
+        state[i] = packed(s);
       });
 }
 
@@ -68,12 +60,12 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
 
 template <class B>
 void computeDensityAndPressure(FluidParticles<B>& fluid, const Grid<B>& grid,
-                               const BoundaryParticles<B>& boundary,
-                               const FluidParameters& params) {
+                               const BoundaryParticles<B>& boundary, const FluidParameters& params,
+                               [[maybe_unused]] NeighborWalk walk) {
   withKernels(params, [&](auto kernels) {
 #if !defined(__CUDACC__)
     if constexpr (B::kBatches) {
-      if (backend::batchedPasses()) {
+      if (walk == NeighborWalk::Batched) {
         detail::densityPassBatched(fluid, grid, boundary, params, kernels);
         return;
       }

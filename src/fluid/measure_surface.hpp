@@ -1,5 +1,5 @@
 // Stage (outside the step, when a frame or statistics are taken): the colour field's gradient
-// |∇c| at the particles' present positions (seed 1 eqs. 11-12, C_j = 1), into acceleration.w;
+// |∇c| at the particles' present positions (Meteer 2011, eqs. 11-12, C_j = 1), into acceleration.w;
 // a particle is on the free surface where it passes the threshold. Walls count as filled space.
 // Reads the neighbour lists of the last density pass (the cells for a particle with too many),
 // so it needs a step taken; the pairs are those of that step, their distances today's.
@@ -7,7 +7,7 @@
 
 #include "fluid/kernel_dispatch.hpp"
 #include "fluid/neighbors.hpp"
-#include "fluid/parameters.hpp"
+#include "fluid/pair_terms.hpp"
 #include "fluid/particles.hpp"
 #include "sph/core/read_only.hpp"
 
@@ -19,17 +19,12 @@ template <class B, class Kernels>
 void measureSurfaceWith(FluidParticles<B>& fluid, const Grid<B>& grid,
                         const BoundaryParticles<B>& boundary, const FluidParameters& params,
                         Kernels kernels) {
-  const GridSpec spec = grid.spec;
-  const std::uint32_t* cellStart = grid.cellStart.data();
-  const GridSpec wallGrid = boundary.grid;
-  const std::uint32_t* wallCellStart = boundary.cellStart.data();
+  const NeighborLists lists = neighborLists(fluid, grid);
+  const WallCells walls = wallCells(boundary);
   const Vec4* position = fluid.position.data();
-  const Vec4* state = fluid.pressureState.data();  // y: 1/ρ
-  const Vec4* wall = boundary.position.data();     // w: volume
+  const Vec4* state = fluid.pressureState.data();
+  const Vec4* wall = boundary.position.data();  // w: volume ψ_b
   Vec4* acceleration = fluid.acceleration.data();
-  const std::uint32_t stride = fluid.neighborStride;
-  const std::uint32_t* neighbors = fluid.neighbors.data();
-  const std::uint32_t* neighborCount = fluid.neighborCount.data();
   const float h2 = params.h * params.h;
   const float mass = params.mass;
 
@@ -37,27 +32,19 @@ void measureSurfaceWith(FluidParticles<B>& fluid, const Grid<B>& grid,
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const Vec3 xi = xyz(position[i]);
         Vec3 gradient{0.0f, 0.0f, 0.0f};
-        auto add = [&](Vec3 rij, float volumeJ) {
+        auto add = [&](Vec3 rij, float volume) {
           const float r2 = lengthSquared(rij);
           if (r2 >= h2 || r2 <= 0.0f) return;
-          gradient += rij * (volumeJ * kernels.colourGradFactor(realSqrt(r2)));
+          gradient += colourGradientTerm(kernels, makePair(rij, r2, true, h2), volume);
         };
-        auto fluidPair = [&](std::uint32_t j) {
-          if (j != i) add(xi - xyz(readOnly(position + j)), mass * readOnly(state + j).y);
-        };
-        const std::uint32_t count = neighborCount[i];
-        if (count != kNeighborOverflow) {
-          const std::uint32_t* list = neighbors + i * stride;
-          for (std::uint32_t k = 0; k < count; ++k) fluidPair(readOnly(list + k));
-        } else {
-          forEachNeighbor(spec, cellStart, xi, fluidPair);
-        }
-        if (wallCellStart != nullptr) {
-          forEachNeighbor(wallGrid, wallCellStart, xi, [&](std::uint32_t b) {
-            const Vec4 xb = readOnly(wall + b);
-            add(xi - xyz(xb), xb.w);
-          });
-        }
+        forEachListedNeighbor(lists, i, xi, [&](std::uint32_t j) {
+          add(xi - xyz(readOnly(position + j)),
+              mass * unpackPressureState(readOnly(state + j)).inverseDensity);
+        });
+        forEachWallNeighbor(walls, xi, [&](std::uint32_t b) {
+          const Vec4 xb = readOnly(wall + b);
+          add(xi - xyz(xb), xb.w);
+        });
         acceleration[i].w = length(gradient);
       });
 }

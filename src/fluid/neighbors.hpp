@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "fluid/particles.hpp"
 #include "sph/core/grid.hpp"
 #include "sph/core/read_only.hpp"
 
@@ -34,6 +35,56 @@ SPH_HD void forEachNeighbor(const GridSpec& grid, const std::uint32_t* cellStart
   forEachNeighborRange(grid, cellStart, p, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t j = begin; j < end; ++j) visit(j);
   });
+}
+
+// The fluid neighbours the density pass listed, as the passes after it read them; the cells
+// for a particle that had too many to list.
+struct NeighborLists {
+  const std::uint32_t* index;  // particle i's from i·stride
+  const std::uint32_t* count;  // kNeighborOverflow: not listed
+  std::uint32_t stride;
+  GridSpec spec;
+  const std::uint32_t* cellStart;
+};
+
+template <class B>
+NeighborLists neighborLists(const FluidParticles<B>& fluid, const Grid<B>& grid) {
+  return NeighborLists{fluid.neighbors.data(), fluid.neighborCount.data(), fluid.neighborStride,
+                       grid.spec, grid.cellStart.data()};
+}
+
+// Calls visit(j) for each fluid neighbour j of particle i, itself left out: those listed, or
+// every particle of the 27 cells for a particle with too many to list (visit tests the
+// distance).
+template <class Visit>
+SPH_HD void forEachListedNeighbor(const NeighborLists& lists, std::size_t i, Vec3 xi,
+                                  Visit&& visit) {
+  const std::uint32_t count = lists.count[i];
+  if (count != kNeighborOverflow) {
+    const std::uint32_t* list = lists.index + i * lists.stride;
+    for (std::uint32_t k = 0; k < count; ++k) visit(readOnly(list + k));
+  } else {
+    forEachNeighbor(lists.spec, lists.cellStart, xi, [&](std::uint32_t j) {
+      if (j != i) visit(j);
+    });
+  }
+}
+
+// The static wall particles near a position, through their own grid; none when there are no
+// walls.
+struct WallCells {
+  GridSpec spec;
+  const std::uint32_t* cellStart;  // null: no walls
+};
+
+template <class B>
+WallCells wallCells(const BoundaryParticles<B>& boundary) {
+  return WallCells{boundary.grid, boundary.cellStart.data()};
+}
+
+template <class Visit>
+SPH_HD void forEachWallNeighbor(const WallCells& walls, Vec3 x, Visit&& visit) {
+  if (walls.cellStart != nullptr) forEachNeighbor(walls.spec, walls.cellStart, x, visit);
 }
 
 }  // namespace sph::fluid

@@ -26,6 +26,10 @@ struct FluidParameters {
   Vec3 gravity;            // m/s²
 };
 
+// How the CPU's passes take neighbours: a SIMD batch at a time, or one at a time as the GPU
+// does, the reference the first is tested and timed against. The GPU ignores it.
+enum class NeighborWalk { Batched, OneAtATime };
+
 // The explicit domain: what lies outside is removed or clamped; the seed's damped box
 // reflects at its faces.
 struct DomainParameters {

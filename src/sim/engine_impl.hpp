@@ -56,7 +56,8 @@ std::unique_ptr<PendingParticles> beginParticleDownload(const fluid::FluidPartic
 template <class B>
 class EngineImpl final : public FluidEngine {
  public:
-  explicit EngineImpl(const EngineSetup& setup) : params_(setup.params), domain_(setup.domain) {
+  explicit EngineImpl(const EngineSetup& setup)
+      : params_(setup.params), domain_(setup.domain), walk_(setup.walk) {
     const std::size_t n = setup.positions.size();
     std::vector<Vec4> position(n), velocity(n), zero(n, Vec4{0, 0, 0, 0});
     std::vector<std::uint32_t> id(n);
@@ -87,9 +88,9 @@ class EngineImpl final : public FluidEngine {
 
   std::size_t buildGrid() override { return fluid::buildGrid(fluid_, grid_, domain_); }
   void computeDensityAndPressure() override {
-    fluid::computeDensityAndPressure(fluid_, grid_, boundary_, params_);
+    fluid::computeDensityAndPressure(fluid_, grid_, boundary_, params_, walk_);
   }
-  void computeForces() override { fluid::computeForces(fluid_, grid_, boundary_, params_); }
+  void computeForces() override { fluid::computeForces(fluid_, grid_, boundary_, params_, walk_); }
   fluid::StepMeasures measureStep() override {
     return fluid::measureStep(fluid_, params_.restDensity);
   }
@@ -167,6 +168,7 @@ class EngineImpl final : public FluidEngine {
  private:
   fluid::FluidParameters params_;
   fluid::DomainParameters domain_;
+  fluid::NeighborWalk walk_;
   fluid::FluidParticles<B> fluid_;
   mutable std::shared_ptr<DownloadStaging> staging_;  // made on the first download
   fluid::BoundaryParticles<B> boundary_;

@@ -103,6 +103,7 @@ struct EngineSetup {
   std::vector<Vec3> velocities;  // fluid, by id
   std::vector<Vec3> walls;       // wall particles; their ids follow the fluid's
   std::uint32_t neighborStride = 0;
+  fluid::NeighborWalk walk = fluid::NeighborWalk::Batched;
 };
 
 std::unique_ptr<FluidEngine> makeCpuEngine(const EngineSetup& setup);

@@ -69,6 +69,9 @@ struct Simulation::Impl {
     backend::requireCompiledInstructionSet();
     calibration = sim::calibrate(scene);
     sim::EngineSetup setup = sim::engineSetup(scene, calibration);
+    if (options.neighborListLength > 0) setup.neighborStride = options.neighborListLength;
+    setup.walk = options.cpuPasses == CpuPasses::Batched ? fluid::NeighborWalk::Batched
+                                                         : fluid::NeighborWalk::OneAtATime;
     params = setup.params;
     dt = calibration.initialDt;
     std::optional<objects::ObjectWorld> world;

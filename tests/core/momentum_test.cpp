@@ -88,5 +88,18 @@ TEST(Momentum, WallPressureGrowsWithDepth) {
   EXPECT_LT(wallPressure(50.0f, 1000.0f, g, Vec3{0.0f, 0.01f, 0.0f}, false), 0.0f);
 }
 
+TEST(Momentum, SurfaceTensionPullsAlongTheNormalOnlyAtTheSurface) {
+  // At the surface the colour gradient points into the fluid; a negative Laplacian (a convex
+  // surface) pulls the particle inward, along it, by σ |∇²c| / ρ.
+  const Vec3 inward{0.0f, -40.0f, 0.0f};
+  const Vec3 a = surfaceTensionAcceleration(0.07f, 10.0f, inward, -2000.0f, 1000.0f);
+  EXPECT_NEAR(a.y, -0.07f * 2000.0f / 1000.0f, 1e-6f);
+  EXPECT_EQ(a.x, 0.0f);
+  // Below the threshold the gradient is noise of the interior: no force.
+  const Vec3 none =
+      surfaceTensionAcceleration(0.07f, 10.0f, Vec3{0.0f, -9.0f, 0.0f}, -2000.0f, 1000.0f);
+  EXPECT_EQ(length(none), 0.0f);
+}
+
 }  // namespace
 }  // namespace sph

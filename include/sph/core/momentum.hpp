@@ -66,4 +66,14 @@ SPH_HD V artificialViscosityAcceleration(S alpha, S soundSpeed, S h, S massJ, S 
   return gradW * select(approach < S(0), massJ * alpha * soundSpeed * mu / meanDensity, S(0));
 }
 
+// Müller et al. 2003 eq. 19 as an acceleration: -σ ∇²c n / (|n| ρ_i), with n = ∇c the colour
+// field's gradient, where |n| passes the surface threshold; inside the fluid n is noise, and
+// nothing acts.
+SPH_HD Vec3 surfaceTensionAcceleration(float sigma, float threshold, Vec3 colourGradient,
+                                       float colourLaplacian, float density) {
+  const float normalLength = length(colourGradient);
+  if (normalLength <= threshold) return Vec3{0.0f, 0.0f, 0.0f};
+  return colourGradient * (-sigma * colourLaplacian / (normalLength * density));
+}
+
 }  // namespace sph

@@ -1,7 +1,7 @@
 // What lets a formula be written once for one float (the GPU, and scalar CPU code) and for a
 // batch of floats (the CPU's SIMD passes, std::experimental::simd): a comparison gives a bool
 // or a mask, select() picks by it, and realSqrt() takes either. Formulas use no branches on
-// values, so both compile from the same source (DESIGN.md: core generic over the arithmetic).
+// values, so both compile from the same source.
 #pragma once
 
 #include "sph/core/vec.hpp"
@@ -17,6 +17,21 @@ SPH_HD float select(bool condition, float ifTrue, float ifFalse) {
 }
 SPH_HD double select(bool condition, double ifTrue, double ifFalse) {
   return condition ? ifTrue : ifFalse;
+}
+
+// What a sum over one neighbour at a time adds up to is already the particle's: summing the
+// lanes is for batches.
+SPH_HD float sumLanes(float v) {
+  return v;
+}
+SPH_HD Vec3 sumLanes(Vec3 v) {
+  return v;
+}
+
+// A vector in every lane: V is Vec3 (itself) or BatchVec3.
+template <class V>
+SPH_HD V spread(Vec3 v) {
+  return v;
 }
 
 #if !defined(__CUDACC__)
@@ -76,6 +91,13 @@ SPH_BATCH_INLINE FloatBatch dot(const BatchVec3& a, const BatchVec3& b) {
 // The sum over the lanes: what the batch of neighbours adds to one particle.
 SPH_BATCH_INLINE Vec3 sumLanes(const BatchVec3& a) {
   return {stdx::reduce(a.x), stdx::reduce(a.y), stdx::reduce(a.z)};
+}
+SPH_BATCH_INLINE float sumLanes(const FloatBatch& a) {
+  return stdx::reduce(a);
+}
+template <>
+SPH_BATCH_INLINE BatchVec3 spread<BatchVec3>(Vec3 v) {
+  return broadcast(v);
 }
 #endif
 
