@@ -27,12 +27,20 @@ double median(std::vector<double> v) {
 }
 
 struct StageSamples {
-  std::vector<double> total, buildGrid, densityPressure, forces, interaction, timeStep, integrate,
-      objects;
-  void add(const StepProfile& p) {
+  std::vector<double> total, buildGrid, densityPressure, solve, forces, interaction, timeStep,
+      integrate, objects;
+  // The incompressible solver's iterations over the timed steps, and its errors.
+  double densityIterations = 0.0, divergenceIterations = 0.0, densityError = 0.0;
+  double largestDensityError = 0.0;
+  void add(const StepProfile& p, const SolverStats& s) {
     total.push_back(p.total());
     buildGrid.push_back(p.buildGrid);
     densityPressure.push_back(p.densityPressure);
+    solve.push_back(p.divergenceSolve + p.densitySolve);
+    densityIterations += s.densityIterations;
+    divergenceIterations += s.divergenceIterations;
+    densityError += s.densityError;
+    largestDensityError = std::max(largestDensityError, s.largestDensityError);
     forces.push_back(p.forces);
     interaction.push_back(p.interaction);
     timeStep.push_back(p.timeStep);
@@ -47,24 +55,39 @@ nlohmann::json timeScene(const std::string& label, const Scene& scene,
   Simulation sim(scene, where);
   for (int i = 0; i < options.warmupSteps; ++i) sim.step();
   StageSamples samples;
+  const double timedFrom = sim.time();
   for (int i = 0; i < options.steps; ++i) {
     sim.step();
-    samples.add(sim.lastProfile());
+    samples.add(sim.lastProfile(), sim.lastSolve());
   }
   const double step = median(samples.total);
   const double n = double(sim.fluidCount());
   const double rate = step > 0 ? n * 1000.0 / step : 0.0;
   const double interaction = median(samples.interaction);
-  std::printf("%-22s %10.0f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %14.3e\n",
-              label.c_str(), n, step, median(samples.buildGrid), median(samples.densityPressure),
-              median(samples.forces), interaction, median(samples.timeStep),
-              median(samples.integrate), median(samples.objects), rate);
+  const double steps = double(options.steps);
+  const double iterations = (samples.densityIterations + samples.divergenceIterations) / steps;
+  const char* solver = scene.fluid.solver == FluidSolver::Dfsph ? "dfsph" : "wcsph";
+  // Simulated seconds per wall second, over the timed steps.
+  const double simulatedPerStep = (sim.time() - timedFrom) / steps;
+  const double realTime = step > 0 ? simulatedPerStep / (step / 1000.0) : 0.0;
+  std::printf(
+      "%-22s %-6s %10.0f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %6.1f %10.2e "
+      "%9.4f\n",
+      label.c_str(), solver, n, step, median(samples.buildGrid), median(samples.densityPressure),
+      median(samples.solve), median(samples.forces), interaction, median(samples.timeStep),
+      median(samples.integrate), median(samples.objects), iterations, simulatedPerStep, realTime);
   std::fflush(stdout);
   return {{"scene", label},
+          {"solver", solver},
           {"particles", sim.fluidCount()},
           {"ms_per_step", step},
           {"build_grid_ms", median(samples.buildGrid)},
           {"density_pressure_ms", median(samples.densityPressure)},
+          {"solve_ms", median(samples.solve)},
+          {"density_iterations_per_step", samples.densityIterations / steps},
+          {"divergence_iterations_per_step", samples.divergenceIterations / steps},
+          {"average_density_error", samples.densityError / steps},
+          {"largest_density_error", samples.largestDensityError},
           {"forces_ms", median(samples.forces)},
           {"interaction_ms", interaction},
           {"interaction_share", step > 0 ? interaction / step : 0.0},
@@ -73,9 +96,8 @@ nlohmann::json timeScene(const std::string& label, const Scene& scene,
           {"time_step_ms", median(samples.timeStep)},
           {"integrate_ms", median(samples.integrate)},
           {"particle_steps_per_second", rate},
-          {"simulated_seconds_per_step", sim.time() / double(sim.stepCount())},
-          // Simulated seconds per wall second over the timed steps' median.
-          {"real_time_factor", sim.time() / double(sim.stepCount()) / (step / 1000.0)}};
+          {"simulated_seconds_per_step", simulatedPerStep},
+          {"real_time_factor", realTime}};
 }
 
 }  // namespace
@@ -90,23 +112,33 @@ int benchCommand(const BenchOptions& options) {
       "sph bench: box drop, backend %s, %d threads, %d warm-up + %d timed steps; "
       "median ms per step\n",
       backendName, backend::threadCount(), options.warmupSteps, options.steps);
-  std::printf("%-22s %10s %9s %9s %9s %9s %9s %9s %9s %9s %14s\n", "scene", "particles", "step",
-              "grid", "density", "forces", "contacts", "dt", "integrate", "objects",
-              "particle-steps/s");
+  std::printf("%-22s %-6s %10s %9s %9s %9s %9s %9s %9s %9s %9s %9s %6s %10s %9s\n", "scene",
+              "solver", "particles", "step", "grid", "density", "solve", "forces", "contacts", "dt",
+              "integrate", "objects", "iters", "sim s/step", "real time");
   nlohmann::json results = nlohmann::json::array();
-  for (int size : options.sizes)
-    results.push_back(timeScene("box_drop", boxDropScene(size), where, options));
+  // Each scene once with its own solver, or once with each solver asked for.
+  const auto timeWithSolvers = [&](const std::string& label, Scene scene) {
+    if (options.solvers.empty()) {
+      results.push_back(timeScene(label, scene, where, options));
+      return;
+    }
+    for (const std::string& solver : options.solvers) {
+      scene.fluid.solver = solver == "dfsph" ? FluidSolver::Dfsph : FluidSolver::Wcsph;
+      results.push_back(timeScene(label, scene, where, options));
+    }
+  };
+  for (int size : options.sizes) timeWithSolvers("box_drop", boxDropScene(size));
   for (const std::string& path : options.scenes) {
     Scene scene = io::loadScene(path, options.overrides);
     if (scene.objects.empty() || options.influenceRatios.empty()) {
-      results.push_back(timeScene(scene.name, scene, where, options));
+      timeWithSolvers(scene.name, scene);
       continue;
     }
     for (double ratio : options.influenceRatios) {
       scene.interaction.influenceRatio = ratio;
       char label[64];
       std::snprintf(label, sizeof label, "%s r%.2g", scene.name.c_str(), ratio);
-      results.push_back(timeScene(label, scene, where, options));
+      timeWithSolvers(label, scene);
     }
   }
   if (!options.json.empty()) {

@@ -64,6 +64,9 @@ struct BenchOptions {
   std::string json;  // also write the results here
   // Seed 1 §9: each scene with objects is timed at each of these influence ratios.
   std::vector<double> influenceRatios;
+  // Each size and scene is timed with each of these solvers ("wcsph", "dfsph"); none: the
+  // scene's own.
+  std::vector<std::string> solvers;
 };
 
 int runCommand(const RunOptions& options);

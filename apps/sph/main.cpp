@@ -108,6 +108,12 @@ int main(int argc, char** argv) {
                    "particle radius), e.g. 1,1.5,2,3 (seed 1 §9)")
       ->delimiter(',')
       ->check(CLI::Range(1.0, 4.0));
+  benchCmd
+      ->add_option("--solver", bench.solvers,
+                   "Time each size and scene with these solvers, side by side: wcsph, dfsph "
+                   "(default: the scene's own)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"wcsph", "dfsph"}));
 
   auto dispatch = [&]() -> int {
     if (*runCmd) {

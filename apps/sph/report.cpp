@@ -42,8 +42,22 @@ void printCalibration(std::FILE* out, const Simulation& sim) {
   std::fprintf(out, "  kinematic viscosity  %.6g m^2/s\n", c.kinematicViscosity);
   std::fprintf(out, "  surface threshold    |grad c| > %.6g 1/m (%s)\n", c.surfaceThreshold,
                origin(s.fluid.surfaceThreshold.has_value()));
-  std::fprintf(out, "  first time step      %.6g s (CFL %.3g; adaptive unless time.fixed_dt)\n",
-               c.initialDt, s.time.cfl);
+  if (s.fluid.solver == FluidSolver::Dfsph) {
+    const DfsphDesc& d = s.fluid.dfsph;
+    std::fprintf(out,
+                 "  solver               incompressible (dfsph): density tolerance %.3g %%, "
+                 "divergence %.3g %%, %d-%d iterations, warm start %s\n",
+                 100.0 * d.densityTolerance, 100.0 * d.divergenceTolerance, d.minIterations,
+                 d.maxIterations, d.warmStart ? "on" : "off");
+    std::fprintf(out,
+                 "  first time step      %.6g s (adaptive unless time.fixed_dt: CFL %.3g h/v_max, "
+                 "force factor %.3g; c0 sets the artificial viscosity only)\n",
+                 c.initialDt, s.time.cfl, d.forceFactor);
+  } else {
+    std::fprintf(out, "  solver               weakly compressible (wcsph)\n");
+    std::fprintf(out, "  first time step      %.6g s (CFL %.3g; adaptive unless time.fixed_dt)\n",
+                 c.initialDt, s.time.cfl);
+  }
   if (s.objects.empty()) return;
   std::fprintf(out, "  objects              %zu, %llu particles\n", s.objects.size(),
                static_cast<unsigned long long>(c.objectParticles));
@@ -90,12 +104,18 @@ nlohmann::json statsJson(const FrameStats& s) {
           {"boundary_count", s.boundaryCount},
           {"kinetic_energy", s.kineticEnergy},
           {"mean_density", s.meanDensity},
+          {"average_density_error", s.averageDensityError},
           {"max_density_error", s.maxDensityError},
           {"max_speed", s.maxSpeed},
           {"surface_count", s.surfaceCount},
           {"leaked_count", s.leakedCount},
           {"removed_count", s.removedCount},
           {"contact_pairs", s.contactPairs},
+          {"density_iterations_per_step",
+           s.steps ? double(s.densityIterations) / double(s.steps) : 0.0},
+          {"divergence_iterations_per_step",
+           s.steps ? double(s.divergenceIterations) / double(s.steps) : 0.0},
+          {"unconverged_solves", s.unconvergedSolves},
           {"objects", objectsJson(s.objects)},
           {"wall_ms_per_step", s.wallMsPerStep}};
 }

@@ -31,6 +31,7 @@ struct FluidBlock {
   Vec3d velocity{0, 0, 0};
   bool hydrostatic = false;
   std::string inside;
+  Vec3d angularVelocity{0, 0, 0};  // rad/s, a rigid spin about the box's centre
 };
 
 // A tank whose inner faces are `box`, built from `layers` layers of boundary particles
@@ -48,10 +49,25 @@ struct DomainDesc {
   double damping = 0.5;
 };
 
+// The incompressible solver (fluid.solver "dfsph"; Bender & Koschier 2015): when its two
+// solves stop.
+struct DfsphDesc {
+  double densityTolerance = 0.0005;    // average ρ/ρ0 - 1 predicted at the end of the step
+  double divergenceTolerance = 0.001;  // average Δt (Dρ/Dt) / ρ0
+  int minIterations = 1;
+  int maxIterations = 100;
+  bool warmStart = true;  // each solve starts from the last step's pressure
+  // The step under acceleration: Δt ≤ force_factor √(h / a_max). The solve predicts the
+  // density linearly over the step; past about 0.1 the prediction fails near walls.
+  double forceFactor = 0.1;
+};
+
 struct FluidDesc {
   double restDensity = 1000.0;  // kg/m³
   double spacing = 0.01;        // lattice spacing d, m
   double supportRatio = 2.0;    // h / d
+  FluidSolver solver = FluidSolver::Wcsph;
+  DfsphDesc dfsph;
   KernelKind kernel = KernelKind::Muller;
   EquationOfState eos = EquationOfState::Linear;
   bool clampNegativePressure = true;

@@ -51,14 +51,27 @@ struct Calibration {
 struct StepProfile {
   double buildGrid = 0.0;
   double densityPressure = 0.0;
+  double divergenceSolve = 0.0;  // DFSPH
   double forces = 0.0;
   double interaction = 0.0;  // collisions and contact forces with objects (seed 1 §7)
   double timeStep = 0.0;
+  double densitySolve = 0.0;  // DFSPH
   double integrate = 0.0;
   double objects = 0.0;  // handing the step to the object engine (its own thread by default)
   double total() const {
-    return buildGrid + densityPressure + forces + interaction + timeStep + integrate + objects;
+    return buildGrid + densityPressure + divergenceSolve + forces + interaction + timeStep +
+           densitySolve + integrate + objects;
   }
+};
+
+// The incompressible solver's (DFSPH) last step; all zero for the weakly compressible solver.
+struct SolverStats {
+  int densityIterations = 0;     // velocity corrections of the density solve, warm start aside
+  int divergenceIterations = 0;  // the same for the divergence solve
+  double densityError = 0.0;     // average ρ/ρ0 - 1 the step ends with, as the solve predicted
+  double largestDensityError = 0.0;  // of one particle
+  double divergenceError = 0.0;      // average Δt (Dρ/Dt) / ρ0 left by the divergence solve
+  bool converged = true;             // both met their tolerance within their iterations
 };
 
 enum class Backend { Cpu, Cuda, Auto };  // Auto: the GPU when one is present
@@ -146,6 +159,7 @@ class Simulation {
   const Scene& scene() const;
   const Calibration& calibration() const;
   const StepProfile& lastProfile() const;
+  SolverStats lastSolve() const;
 
   // The objects of the scene, as their engine has them now.
   std::vector<ObjectStats> objectStats() const;

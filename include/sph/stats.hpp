@@ -24,14 +24,20 @@ struct FrameStats {
   double dt = 0.0;          // last time step, s
   std::uint64_t fluidCount = 0;
   std::uint64_t boundaryCount = 0;
-  double kineticEnergy = 0.0;    // J
-  double meanDensity = 0.0;      // kg/m³
-  double maxDensityError = 0.0;  // max (ρ/ρ0 - 1): compression; a free surface reads low
-  double maxSpeed = 0.0;         // m/s
+  double kineticEnergy = 0.0;        // J
+  double meanDensity = 0.0;          // kg/m³
+  double averageDensityError = 0.0;  // mean of max (ρ/ρ0 - 1, 0) over the fluid
+  double maxDensityError = 0.0;      // max (ρ/ρ0 - 1): compression; a free surface reads low
+  double maxSpeed = 0.0;             // m/s
   std::uint64_t surfaceCount = 0;
   std::uint64_t leakedCount = 0;
   std::uint64_t removedCount = 0;
   std::uint64_t contactPairs = 0;  // fluid–object pairs in contact, last step
+  // The incompressible solver's iterations summed over every step so far (0 for the weakly
+  // compressible one), and its solves that stopped at max_iterations short of the tolerance.
+  std::uint64_t densityIterations = 0;
+  std::uint64_t divergenceIterations = 0;
+  std::uint64_t unconvergedSolves = 0;
   std::vector<ObjectStats> objects;
   double wallMsPerStep = 0.0;  // mean over the steps since the previous row
 };

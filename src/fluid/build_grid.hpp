@@ -1,5 +1,6 @@
-// Stage: build the uniform grid. Reads position, velocity, id. Writes them reordered by cell,
-// grid.cellStart and count. Particles outside the domain are removed; returns how many.
+// Stage: build the uniform grid. Reads position, velocity, id and the solver's warm start.
+// Writes them reordered by cell, grid.cellStart and count. Particles outside the domain are
+// removed; returns how many.
 #pragma once
 
 #include <cmath>
@@ -74,6 +75,10 @@ std::size_t buildGrid(FluidParticles<B>& fluid, Grid<B>& grid, const DomainParam
   fluid.velocity.swap(fluid.scratch4);
   B::gather(fluid.id.data(), fluid.order.data(), kept, fluid.scratchId.data());
   fluid.id.swap(fluid.scratchId);
+  if (fluid.warmStart.size() != 0) {
+    B::gather(fluid.warmStart.data(), fluid.order.data(), kept, fluid.scratch4.data());
+    fluid.warmStart.swap(fluid.scratch4);
+  }
 
   fluid.count = kept;
   return n - kept;

@@ -1,8 +1,8 @@
-// Stage: all forces in one pass (Meteer 2011, Algorithm 2): pressure, viscosity, surface
-// tension, gravity and external accelerations. Reads position, velocity, pressureState, the
-// neighbour lists, the walls and externalById. Writes acceleration (w: 0; |∇c| for the surface
-// flags is measured when a frame is taken, measure_surface.hpp). The colour field is summed
-// only for surface tension, which needs it: it is a fifth of the pass.
+// Stage: all forces in one pass (Meteer 2011, Algorithm 2): pressure (unless the incompressible
+// solver gives it), viscosity, surface tension, gravity and external accelerations. Reads position,
+// velocity, pressureState, the neighbour lists, the walls and externalById. Writes acceleration (w:
+// 0; |∇c| for the surface flags is measured when a frame is taken, measure_surface.hpp). The colour
+// field is summed only for surface tension, which needs it: it is a fifth of the pass.
 #pragma once
 
 #include "fluid/forces_batched.hpp"
@@ -75,27 +75,29 @@ void forcePassWithKernels(FluidParticles<B>& fluid, const Grid<B>& grid,
   });
 }
 
-template <class B, PressureForm kForm, ViscosityModel kViscosity>
+template <class B, PressureForm kForm, ViscosityModel kViscosity, bool kPressure>
 void forcePassWithTension(FluidParticles<B>& fluid, const Grid<B>& grid,
                           const BoundaryParticles<B>& boundary, const FluidParameters& params,
                           NeighborWalk walk) {
   if (params.surfaceTension > 0.0f) {
-    forcePassWithKernels<B, ForceOptions<kForm, kViscosity, true>>(fluid, grid, boundary, params,
-                                                                   walk);
+    forcePassWithKernels<B, ForceOptions<kForm, kViscosity, true, kPressure>>(fluid, grid, boundary,
+                                                                              params, walk);
   } else {
-    forcePassWithKernels<B, ForceOptions<kForm, kViscosity, false>>(fluid, grid, boundary, params,
-                                                                    walk);
+    forcePassWithKernels<B, ForceOptions<kForm, kViscosity, false, kPressure>>(
+        fluid, grid, boundary, params, walk);
   }
 }
 
-template <class B, PressureForm kForm>
+template <class B, PressureForm kForm, bool kPressure = true>
 void forcePassWithViscosity(FluidParticles<B>& fluid, const Grid<B>& grid,
                             const BoundaryParticles<B>& boundary, const FluidParameters& params,
                             NeighborWalk walk) {
   if (params.viscosityModel == ViscosityModel::Artificial) {
-    forcePassWithTension<B, kForm, ViscosityModel::Artificial>(fluid, grid, boundary, params, walk);
+    forcePassWithTension<B, kForm, ViscosityModel::Artificial, kPressure>(fluid, grid, boundary,
+                                                                          params, walk);
   } else {
-    forcePassWithTension<B, kForm, ViscosityModel::Muller>(fluid, grid, boundary, params, walk);
+    forcePassWithTension<B, kForm, ViscosityModel::Muller, kPressure>(fluid, grid, boundary, params,
+                                                                      walk);
   }
 }
 
@@ -105,7 +107,10 @@ template <class B>
 void computeForces(FluidParticles<B>& fluid, const Grid<B>& grid,
                    const BoundaryParticles<B>& boundary, const FluidParameters& params,
                    NeighborWalk walk) {
-  if (params.pressureForm == PressureForm::Symmetric) {
+  if (!params.pressureForces) {
+    detail::forcePassWithViscosity<B, PressureForm::Symmetric, false>(fluid, grid, boundary, params,
+                                                                      walk);
+  } else if (params.pressureForm == PressureForm::Symmetric) {
     detail::forcePassWithViscosity<B, PressureForm::Symmetric>(fluid, grid, boundary, params, walk);
   } else {
     detail::forcePassWithViscosity<B, PressureForm::Paper>(fluid, grid, boundary, params, walk);

@@ -78,12 +78,14 @@ SPH_HD_INLINE S colourLaplacianTerm(const Kernels& kernels, const Pair<S, V, M>&
 }
 
 // The scene's choices for the force pass as compile-time constants, so the neighbour loop has
-// no branch on them.
-template <PressureForm kForm, ViscosityModel kViscosity, bool kSurfaceTension>
+// no branch on them. Without `pressure` the pass leaves pressure to the incompressible solver.
+template <PressureForm kForm, ViscosityModel kViscosity, bool kSurfaceTension,
+          bool kPressure = true>
 struct ForceOptions {
   static constexpr PressureForm form = kForm;
   static constexpr ViscosityModel viscosity = kViscosity;
   static constexpr bool surfaceTension = kSurfaceTension;
+  static constexpr bool pressure = kPressure;
 };
 
 // What the force pass reads of a fluid neighbour for its pressure term: p/ρ² (symmetric form)
@@ -154,7 +156,8 @@ struct ForceTerms {
     if constexpr (kReadsInverseDensity) inverseDensityJ = S(1.0f) / densityJ;
     const V gradW = pair.rij * pair.where(c.kernels.gradFactor(pair.r));
     V& a = sums.acceleration;
-    if constexpr (kSymmetric) {
+    if constexpr (!Options::pressure) {
+    } else if constexpr (kSymmetric) {
       a += pressureAccelerationSymmetric(c.mass, pOverRho2I, pressureTermJ, gradW);
     } else {
       a += pressureAccelerationPaper(c.mass, pressureI, inverseDensityI, pressureTermJ,
@@ -181,9 +184,17 @@ struct ForceTerms {
   SPH_HD_INLINE void addWall(Sums& sums, const Pair<S, V, M>& pair, S volumeB) const {
     const S massB = c.restDensity * volumeB;
     const V gradW = pair.rij * pair.where(c.kernels.gradFactor(pair.r));
-    const S pB = wallPressure(pressureI, densityI, c.gravity, -pair.rij, c.p.clampNegativePressure);
     V& a = sums.acceleration;
-    a += boundaryPressureAcceleration(massB, pressureI, densityI, pB, gradW);
+    if constexpr (Options::pressure) {
+      const S pB =
+          wallPressure(pressureI, densityI, c.gravity, -pair.rij, c.p.clampNegativePressure);
+      a += boundaryPressureAcceleration(massB, pressureI, densityI, pB, gradW);
+    } else {
+      // The incompressible solve mirrors the fluid's K into the walls (dfsph_passes.hpp); the
+      // hydrostatic part of the wall's pressure, which no K carries, acts here.
+      const S pB = wallPressure(S(0.0f), densityI, c.gravity, -pair.rij, true);
+      a += boundaryPressureAcceleration(massB, S(0.0f), densityI, pB, gradW);
+    }
     if (c.p.wallFriction > 0.0f) {
       V friction;
       if constexpr (kArtificial) {

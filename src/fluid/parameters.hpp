@@ -14,6 +14,7 @@ struct FluidParameters {
   PressureForm pressureForm;
   ViscosityModel viscosityModel;
   bool clampNegativePressure;
+  bool pressureForces;     // false: the incompressible solver gives the pressure (DFSPH)
   float h;                 // support radius, m
   float mass;              // per fluid particle, kg
   float restDensity;       // kg/m³

@@ -14,6 +14,8 @@ constexpr std::uint32_t kNeighborOverflow = 0xffffffffu;
 // Padding of the arrays the CPU's SIMD passes load a batch at a time: the widest batch (16
 // floats, AVX-512).
 constexpr std::size_t kBatchPadding = 16;
+// Floats in a record of the incompressible solver: 8, so that 8 neighbours load as 8 rows.
+constexpr std::uint32_t kRecordFields = 8;
 
 // Fluid particles, reordered by cell every step so neighbour loops read memory in order.
 template <class B>
@@ -54,6 +56,16 @@ struct FluidParticles {
   // What the force pass reads of a listed neighbour, 8 floats a particle, so that 8 neighbours
   // load as 8 rows and transpose into batches: x, y, z, pressure term, vx, vy, vz, ρ.
   Buffer<float> batchRecords;
+  // The incompressible solver (DFSPH, dfsph_solve.hpp), 8 floats a particle as above (n +
+  // kBatchPadding): velocityRecords x, y, z, vx, vy, vz, read while stiffnessRecords are
+  // written; stiffnessRecords x, y, z, K, read while velocityRecords are written.
+  Buffer<float> velocityRecords, stiffnessRecords;
+  Buffer<float> solverFactor;         // β_i (core/dfsph.hpp), per step
+  Buffer<float> solverTotal;          // Σ K_i applied this solve
+  Buffer<std::uint64_t> solverError;  // the last iteration's e_i, fixed point (kErrorScale)
+  // Kept across steps, reordered with the particles by buildGrid: x, the density solver's
+  // Σ K_i; y, the divergence solver's Σ K_i times its Δt. Empty unless the solver runs.
+  Buffer<Vec4> warmStart;
 };
 
 // Static wall particles (Akinci et al. 2012), sorted by cell of their own grid once at set-up.

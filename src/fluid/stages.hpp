@@ -4,6 +4,7 @@
 
 #include "fluid/build_grid.hpp"
 #include "fluid/density_pressure.hpp"
+#include "fluid/dfsph_solve.hpp"
 #include "fluid/forces.hpp"
 #include "fluid/integrate.hpp"
 #include "fluid/measure_step.hpp"

@@ -1,5 +1,6 @@
 #include "io/scene_loader.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <system_error>
 #include <utility>
@@ -37,11 +38,26 @@ void readViscosity(const ObjectReader& in, FluidDesc& fluid) {
   fluid.wallFriction = in.number("wall_friction", fluid.wallFriction, kNonNegative);
 }
 
+DfsphDesc readDfsph(const ObjectReader& in) {
+  DfsphDesc d;
+  d.densityTolerance = in.number("density_tolerance", d.densityTolerance, kOpenUnit);
+  d.divergenceTolerance = in.number("divergence_tolerance", d.divergenceTolerance, kOpenUnit);
+  d.minIterations = in.integer("min_iterations", d.minIterations, 0, 1000);
+  // No fewer than the minimum: the range the message states says so.
+  d.maxIterations = in.integer("max_iterations", std::max(d.maxIterations, d.minIterations),
+                               std::max(d.minIterations, 1), 10000);
+  d.warmStart = in.boolean("warm_start", d.warmStart);
+  d.forceFactor = in.number("force_factor", d.forceFactor, kUnitStep);
+  return d;
+}
+
 FluidDesc readFluid(const ObjectReader& in) {
   FluidDesc fluid;
   fluid.restDensity = in.number("rest_density", fluid.restDensity, kPositive);
   fluid.spacing = in.number("spacing", fluid.spacing, kPositive);
   fluid.supportRatio = in.number("support_ratio", fluid.supportRatio, kSupportRatio);
+  fluid.solver = in.choice("solver", fluid.solver, kSolverNames);
+  fluid.dfsph = readDfsph(in.object("dfsph"));
   fluid.kernel = in.choice("kernel", fluid.kernel, kKernelNames);
   fluid.eos = in.choice("eos", fluid.eos, kEosNames);
   fluid.clampNegativePressure = in.boolean("clamp_negative_pressure", fluid.clampNegativePressure);
@@ -57,6 +73,7 @@ FluidDesc readFluid(const ObjectReader& in) {
     block.velocity = blockIn.vec3("velocity", block.velocity);
     block.hydrostatic = blockIn.boolean("hydrostatic", block.hydrostatic);
     block.inside = blockIn.string("inside", block.inside);
+    block.angularVelocity = blockIn.vec3("angular_velocity", block.angularVelocity);
     fluid.blocks.push_back(block);
   }
   return fluid;

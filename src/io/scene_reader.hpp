@@ -57,6 +57,7 @@ inline constexpr NumberRule kPositive{0, kInfinity, true, true};
 inline constexpr NumberRule kNonNegative{0, kInfinity, false, true};
 inline constexpr NumberRule kClosedUnit{0, 1, false, false};  // [0, 1]
 inline constexpr NumberRule kUnitStep{0, 1, true, false};     // (0, 1]
+inline constexpr NumberRule kOpenUnit{0, 1, true, true};      // (0, 1)
 
 // Reads the keys of one JSON object. Constructing it checks that the value is an object and
 // that every key in it is in the schema. A reader of an absent object gives every default.

@@ -61,6 +61,8 @@ inline constexpr NamedValue<EquationOfState> kEosNames[] = {{"linear", EquationO
                                                             {"tait", EquationOfState::Tait}};
 inline constexpr NamedValue<PressureForm> kPressureFormNames[] = {
     {"paper", PressureForm::Paper}, {"symmetric", PressureForm::Symmetric}};
+inline constexpr NamedValue<FluidSolver> kSolverNames[] = {{"wcsph", FluidSolver::Wcsph},
+                                                           {"dfsph", FluidSolver::Dfsph}};
 inline constexpr NamedValue<ViscosityModel> kViscosityNames[] = {
     {"muller", ViscosityModel::Muller}, {"artificial", ViscosityModel::Artificial}};
 inline constexpr NamedValue<FrameFormat> kFormatNames[] = {{"vtp", FrameFormat::Vtp},

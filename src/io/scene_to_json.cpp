@@ -38,12 +38,21 @@ json fluidToJson(const FluidDesc& fluid) {
     b["velocity"] = toJson(block.velocity);
     b["hydrostatic"] = block.hydrostatic;
     b["inside"] = block.inside;  // "": in no object
+    b["angular_velocity"] = toJson(block.angularVelocity);
     blocks.push_back(std::move(b));
   }
   return {
       {"rest_density", fluid.restDensity},
       {"spacing", fluid.spacing},
       {"support_ratio", fluid.supportRatio},
+      {"solver", nameOf(fluid.solver, kSolverNames)},
+      {"dfsph",
+       {{"density_tolerance", fluid.dfsph.densityTolerance},
+        {"divergence_tolerance", fluid.dfsph.divergenceTolerance},
+        {"min_iterations", fluid.dfsph.minIterations},
+        {"max_iterations", fluid.dfsph.maxIterations},
+        {"warm_start", fluid.dfsph.warmStart},
+        {"force_factor", fluid.dfsph.forceFactor}}},
       {"kernel", nameOf(fluid.kernel, kKernelNames)},
       {"eos", nameOf(fluid.eos, kEosNames)},
       {"clamp_negative_pressure", fluid.clampNegativePressure},

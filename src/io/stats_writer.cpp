@@ -26,7 +26,8 @@ StatsWriter::StatsWriter(std::filesystem::path csvFile, std::vector<std::string>
   std::string header =
       "time,steps,dt,fluid_count,boundary_count,kinetic_energy,mean_density,"
       "max_density_error,max_speed,surface_count,leaked_count,removed_count,"
-      "wall_ms_per_step,contact_pairs";
+      "wall_ms_per_step,contact_pairs,average_density_error,density_iterations_per_step,"
+      "divergence_iterations_per_step,unconverged_solves";
   for (const std::string& name : objectNames) {
     for (const char* column : {"_force_x", "_force_y", "_force_z", "_com_x", "_com_y", "_com_z"})
       header += "," + name + column;
@@ -38,14 +39,20 @@ StatsWriter::StatsWriter(std::filesystem::path csvFile, std::vector<std::string>
 }
 
 void StatsWriter::append(const FrameStats& s) {
+  const std::uint64_t steps = s.steps - previous_.steps;
+  const auto perStep = [&](std::uint64_t count) {
+    return steps ? double(count) / double(steps) : 0.0;
+  };
   errno = 0;
-  const int written =
-      std::fprintf(file_.get(),
-                   "%.9g,%" PRIu64 ",%.9g,%" PRIu64 ",%" PRIu64 ",%.9g,%.9g,%.9g,%.9g,%" PRIu64
-                   ",%" PRIu64 ",%" PRIu64 ",%.9g,%" PRIu64,
-                   s.time, s.steps, s.dt, s.fluidCount, s.boundaryCount, s.kineticEnergy,
-                   s.meanDensity, s.maxDensityError, s.maxSpeed, s.surfaceCount, s.leakedCount,
-                   s.removedCount, s.wallMsPerStep, s.contactPairs);
+  const int written = std::fprintf(
+      file_.get(),
+      "%.9g,%" PRIu64 ",%.9g,%" PRIu64 ",%" PRIu64 ",%.9g,%.9g,%.9g,%.9g,%" PRIu64 ",%" PRIu64
+      ",%" PRIu64 ",%.9g,%" PRIu64 ",%.9g,%.9g,%.9g,%" PRIu64,
+      s.time, s.steps, s.dt, s.fluidCount, s.boundaryCount, s.kineticEnergy, s.meanDensity,
+      s.maxDensityError, s.maxSpeed, s.surfaceCount, s.leakedCount, s.removedCount, s.wallMsPerStep,
+      s.contactPairs, s.averageDensityError,
+      perStep(s.densityIterations - previous_.densityIterations),
+      perStep(s.divergenceIterations - previous_.divergenceIterations), s.unconvergedSolves);
   if (written < 0) throwFileError("write", path_);
   for (std::size_t o = 0; o < objectCount_; ++o) {
     // A row without the objects (a caller that does not track them) leaves their cells empty.
@@ -59,6 +66,7 @@ void StatsWriter::append(const FrameStats& s) {
   }
   if (std::fputs("\n", file_.get()) < 0) throwFileError("write", path_);
   flushOrThrow();
+  previous_ = s;
 }
 
 // fflush hands the row to the kernel: that survives the process dying, which is what the

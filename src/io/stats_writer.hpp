@@ -20,7 +20,7 @@ class StatsWriter {
   explicit StatsWriter(std::filesystem::path csvFile, std::vector<std::string> objectNames = {});
 
   // Writes one row and flushes it, so every row appended is on disk even if the process dies
-  // right after.
+  // right after. The solver's iterations per step are those of the steps since the last row.
   void append(const FrameStats& stats);
 
  private:
@@ -32,6 +32,7 @@ class StatsWriter {
 
   std::filesystem::path path_;
   std::size_t objectCount_;
+  FrameStats previous_;  // the last row's counts
   std::unique_ptr<std::FILE, FileCloser> file_;
 };
 

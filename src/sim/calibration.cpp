@@ -51,11 +51,17 @@ double fallHeight(const Scene& scene) {
   return top > floor ? top - floor : 0.0;
 }
 
+// The fastest a block starts: its velocity, and its spin at the corners.
 double largestBlockSpeed(const Scene& scene) {
+  const auto norm = [](const Vec3d& u) {
+    return std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  };
   double v = 0.0;
   for (const auto& block : scene.fluid.blocks) {
-    const auto& u = block.velocity;
-    v = std::max(v, std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
+    const Vec3d halfDiagonal{0.5 * (block.box.max[0] - block.box.min[0]),
+                             0.5 * (block.box.max[1] - block.box.min[1]),
+                             0.5 * (block.box.max[2] - block.box.min[2])};
+    v = std::max(v, norm(block.velocity) + norm(block.angularVelocity) * norm(halfDiagonal));
   }
   return v;
 }
@@ -168,10 +174,17 @@ Calibration calibrate(const Scene& scene) {
   if (!scene.objects.empty()) calibrateContact(scene, out);
 
   const TimeDesc& t = scene.time;
+  // The fluid starts at rest: the first step is bounded by sound (weakly compressible) or by
+  // gravity's acceleration (incompressible, whose step follows the flow).
+  const double startBound =
+      f.solver == FluidSolver::Wcsph
+          ? cflTimeStep(t.cfl, out.supportRadius, out.soundSpeed, 0.0)
+          : forceTimeStep(f.dfsph.forceFactor, out.supportRadius,
+                          std::hypot(scene.gravity[0], scene.gravity[1], scene.gravity[2]));
   out.initialDt =
       t.fixedDt
           ? *t.fixedDt
-          : std::min({cflTimeStep(t.cfl, out.supportRadius, out.soundSpeed, 0.0),
+          : std::min({startBound,
                       viscousTimeStep(t.viscousFactor, out.supportRadius, out.kinematicViscosity),
                       t.maxDt});
   return out;
@@ -185,6 +198,7 @@ fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& c)
   p.pressureForm = f.pressureForm;
   p.viscosityModel = f.viscosityModel;
   p.clampNegativePressure = f.clampNegativePressure;
+  p.pressureForces = f.solver == FluidSolver::Wcsph;
   p.h = static_cast<float>(c.supportRadius);
   p.mass = static_cast<float>(c.mass);
   p.restDensity = static_cast<float>(f.restDensity);

@@ -91,6 +91,11 @@ class EngineImpl final : public FluidEngine {
     fluid::computeDensityAndPressure(fluid_, grid_, boundary_, params_, walk_);
   }
   void computeForces() override { fluid::computeForces(fluid_, grid_, boundary_, params_, walk_); }
+  void prepareSolver() override { fluid::prepareSolver(fluid_, grid_, boundary_, params_, walk_); }
+  fluid::SolverReport solve(const fluid::SolverSettings& settings, fluid::SolverTarget target,
+                            float dt) override {
+    return fluid::solve(fluid_, grid_, boundary_, params_, settings, target, dt, walk_);
+  }
   fluid::StepMeasures measureStep() override {
     return fluid::measureStep(fluid_, params_.restDensity);
   }

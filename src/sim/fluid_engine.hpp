@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "fluid/dfsph_settings.hpp"
 #include "fluid/measure_step.hpp"
 #include "fluid/parameters.hpp"
 #include "interaction/object_particles.hpp"
@@ -64,6 +65,12 @@ class FluidEngine {
   virtual void computeDensityAndPressure() = 0;
   virtual void computeForces() = 0;
   virtual fluid::StepMeasures measureStep() = 0;
+  // The incompressible solver (DFSPH): its factors at this step's positions, after the density
+  // pass; then each solve corrects the velocity (NoDivergence) or the acceleration
+  // (RestDensity, after the other forces, over the step dt).
+  virtual void prepareSolver() = 0;
+  virtual fluid::SolverReport solve(const fluid::SolverSettings& settings,
+                                    fluid::SolverTarget target, float dt) = 0;
   virtual std::size_t integrate(float dt) = 0;  // returns the particles clamped
   // Outside the step: |∇c| at the present positions into acceleration.w (the surface flags),
   // from the last density pass's neighbours.

@@ -11,8 +11,10 @@ Simulation::Simulation(const Scene& scene, const SimulationOptions& options)
     : impl_(std::make_unique<Impl>(scene, options)) {}
 Simulation::~Simulation() = default;
 
-// Seed 1 §6 and §7, in our order: the forces of this step, the fluid's own and those of contact
-// with objects, act on the positions they were computed at.
+// Meteer 2011, §6 and §7, in our order: the forces of this step, the fluid's own and those of
+// contact with objects, act on the positions they were computed at. The incompressible solver
+// (DFSPH) first makes the velocity divergence-free, and last gives the pressure that keeps the
+// density at rest; the weakly compressible one does neither, its pressure is in the forces.
 void Simulation::step(double until) {
   Impl& s = *impl_;
   sim::FluidEngine& engine = *s.engine;
@@ -22,9 +24,11 @@ void Simulation::step(double until) {
   profile.buildGrid = timedMs([&] { s.removed += engine.buildGrid(); });
   profile.densityPressure = timedMs([&] { engine.computeDensityAndPressure(); });
   s.neighboursListed = true;
+  profile.divergenceSolve = timedMs([&] { s.solveDivergence(); });
   profile.forces = timedMs([&] { engine.computeForces(); });
   profile.interaction = timedMs([&] { s.interact(); });
   profile.timeStep = timedMs([&] { s.dt = s.chooseTimeStep(until); });
+  profile.densitySolve = timedMs([&] { s.solveDensity(); });
   profile.integrate = timedMs([&] { s.clamped += engine.integrate(float(s.dt)); });
   profile.objects = timedMs([&] { s.advanceObjects(); });
   s.time = (s.dt == until - s.time) ? until : s.time + s.dt;
@@ -77,6 +81,18 @@ const Scene& Simulation::scene() const {
 }
 const Calibration& Simulation::calibration() const {
   return impl_->calibration;
+}
+SolverStats Simulation::lastSolve() const {
+  const Impl& s = *impl_;
+  SolverStats out;
+  if (!s.incompressible()) return out;
+  out.densityIterations = s.densityReport.iterations;
+  out.divergenceIterations = s.divergenceReport.iterations;
+  out.densityError = s.densityReport.averageError;
+  out.largestDensityError = s.densityReport.largestError;
+  out.divergenceError = s.divergenceReport.averageError;
+  out.converged = s.densityReport.converged && s.divergenceReport.converged;
+  return out;
 }
 const StepProfile& Simulation::lastProfile() const {
   return impl_->profile;

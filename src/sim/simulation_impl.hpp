@@ -64,6 +64,14 @@ struct Simulation::Impl {
   std::uint64_t contactPairs = 0;
   sim::HostObjectForces objectForces;
   std::vector<Vec3> fluidForceOnObject;  // by object, last step
+  // The incompressible solver's last solves, and its counts since the start.
+  fluid::SolverReport divergenceReport;
+  fluid::SolverReport densityReport;
+  struct {
+    std::uint64_t densityIterations = 0;
+    std::uint64_t divergenceIterations = 0;
+    std::uint64_t unconvergedSolves = 0;
+  } solverTotals;
 
   Impl(const Scene& s, const SimulationOptions& options) : scene(s) {
     backend::requireCompiledInstructionSet();
@@ -180,8 +188,17 @@ struct Simulation::Impl {
       if (block.hydrostatic)
         sim::compressHydrostatically(points, block.box, scene.gravity, calibration.soundSpeed);
       const Vec3 v{float(block.velocity[0]), float(block.velocity[1]), float(block.velocity[2])};
+      const Vec3 w{float(block.angularVelocity[0]), float(block.angularVelocity[1]),
+                   float(block.angularVelocity[2])};
+      const Vec3 centre{float(0.5 * (block.box.min[0] + block.box.max[0])),
+                        float(0.5 * (block.box.min[1] + block.box.max[1])),
+                        float(0.5 * (block.box.min[2] + block.box.max[2]))};
       setup.positions.insert(setup.positions.end(), points.begin(), points.end());
-      setup.velocities.insert(setup.velocities.end(), points.size(), v);
+      for (const Vec3& p : points) {
+        const Vec3 r = p - centre;  // v + ω × r
+        setup.velocities.push_back(
+            v + Vec3{w.y * r.z - w.z * r.y, w.z * r.x - w.x * r.z, w.x * r.y - w.y * r.x});
+      }
     }
   }
 
@@ -203,6 +220,37 @@ struct Simulation::Impl {
                      "'");
   }
 
+  // The incompressible solver's two solves (nothing for the weakly compressible one).
+  bool incompressible() const { return scene.fluid.solver == FluidSolver::Dfsph; }
+  void solveDivergence() {
+    if (!incompressible()) return;
+    engine->prepareSolver();
+    divergenceReport = engine->solve(solverSettings(fluid::SolverTarget::NoDivergence),
+                                     fluid::SolverTarget::NoDivergence, float(dt));
+    solverTotals.divergenceIterations += std::uint64_t(divergenceReport.iterations);
+    if (!divergenceReport.converged) ++solverTotals.unconvergedSolves;
+  }
+  void solveDensity() {
+    if (!incompressible()) return;
+    densityReport = engine->solve(solverSettings(fluid::SolverTarget::RestDensity),
+                                  fluid::SolverTarget::RestDensity, float(dt));
+    solverTotals.densityIterations += std::uint64_t(densityReport.iterations);
+    if (!densityReport.converged) ++solverTotals.unconvergedSolves;
+  }
+  fluid::SolverSettings solverSettings(fluid::SolverTarget target) const {
+    const DfsphDesc& d = scene.fluid.dfsph;
+    fluid::SolverSettings s;
+    s.tolerance = float(target == fluid::SolverTarget::RestDensity ? d.densityTolerance
+                                                                   : d.divergenceTolerance);
+    s.minIterations = d.minIterations;
+    s.maxIterations = d.maxIterations;
+    s.warmStart = d.warmStart;
+    // Six tenths of a full neighbourhood on the initial lattice: (4/3) π (h/d)³ neighbours.
+    const double ratio = scene.fluid.supportRatio;
+    s.minNeighbours = std::uint32_t(std::lround(0.6 * 4.0 / 3.0 * kPi * ratio * ratio * ratio));
+    return s;
+  }
+
   double chooseTimeStep(double until) {
     const fluid::StepMeasures m = engine->measureStep();
     const float bound = static_cast<float>(scene.failure.maxDensityError);
@@ -211,10 +259,13 @@ struct Simulation::Impl {
     double next =
         t.fixedDt
             ? *t.fixedDt
-            : std::min({cflTimeStep(t.cfl, params.h, params.soundSpeed, m.maxSpeed),
-                        forceTimeStep(t.forceFactor, params.h, m.maxAcceleration),
-                        viscousTimeStep(t.viscousFactor, params.h, calibration.kinematicViscosity),
-                        objects ? objectTimeStep() : HUGE_VAL, t.maxDt});
+            : std::min(
+                  {incompressible() ? flowTimeStep(t.cfl, params.h, m.maxSpeed)
+                                    : cflTimeStep(t.cfl, params.h, params.soundSpeed, m.maxSpeed),
+                   forceTimeStep(incompressible() ? scene.fluid.dfsph.forceFactor : t.forceFactor,
+                                 params.h, m.maxAcceleration),
+                   viscousTimeStep(t.viscousFactor, params.h, calibration.kinematicViscosity),
+                   objects ? objectTimeStep() : HUGE_VAL, t.maxDt});
     const double remaining = until - time;
     // Land exactly on `until` rather than leave a sliver of a step for later.
     if (next >= remaining)

@@ -17,6 +17,7 @@ namespace {
 struct Sums {
   double kineticEnergy = 0.0;
   double density = 0.0;
+  double densityError = 0.0;
   float maxDensityError = 0.0f;
   float maxSpeedSquared = 0.0f;
   std::uint64_t surface = 0;
@@ -148,12 +149,14 @@ void addParticleSums(FrameStats& out, const sim::HostParticles& f, float restDen
       [&](std::size_t i) {
         const float v2 = lengthSquared(xyz(f.velocity[i]));
         const float error = compression(f.density[i], restDensity);
-        return Sums{0.5 * mass * v2, f.density[i], error, v2,
-                    f.acceleration[i].w > surfaceThreshold ? 1u : 0u};
+        return Sums{
+            0.5 * mass * v2, f.density[i], error,
+            error,           v2,           f.acceleration[i].w > surfaceThreshold ? 1u : 0u};
       },
       [](Sums a, const Sums& b) {
         a.kineticEnergy += b.kineticEnergy;
         a.density += b.density;
+        a.densityError += b.densityError;
         a.maxDensityError = std::max(a.maxDensityError, b.maxDensityError);
         a.maxSpeedSquared = std::max(a.maxSpeedSquared, b.maxSpeedSquared);
         a.surface += b.surface;
@@ -163,6 +166,7 @@ void addParticleSums(FrameStats& out, const sim::HostParticles& f, float restDen
   out.fluidCount = n;
   out.kineticEnergy = sums.kineticEnergy;
   out.meanDensity = n ? sums.density / double(n) : 0.0;
+  out.averageDensityError = n ? sums.densityError / double(n) : 0.0;
   out.maxDensityError = sums.maxDensityError;
   out.maxSpeed = std::sqrt(double(sums.maxSpeedSquared));
   out.surfaceCount = sums.surface;
@@ -209,6 +213,9 @@ FrameStats Simulation::Impl::statsWithoutParticles(const Simulation& sim) const 
   out.leakedCount = sim.leakedCount();
   out.removedCount = removed;
   out.contactPairs = contactPairs;
+  out.densityIterations = solverTotals.densityIterations;
+  out.divergenceIterations = solverTotals.divergenceIterations;
+  out.unconvergedSolves = solverTotals.unconvergedSolves;
   out.objects = sim.objectStats();
   return out;
 }

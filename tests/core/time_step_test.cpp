@@ -18,5 +18,14 @@ TEST(TimeStep, TravelStepKeepsMotionUnderTheDistance) {
   EXPECT_EQ(travelTimeStep(0.0005, 0.0), HUGE_VAL);
 }
 
+// The incompressible solver's step: no particle crosses more than cfl·h; at rest, no bound.
+TEST(TimeStep, FlowStepFollowsTheFastestParticle) {
+  EXPECT_DOUBLE_EQ(flowTimeStep(0.4, 0.02, 2.0), 0.004);
+  EXPECT_DOUBLE_EQ(flowTimeStep(0.4, 0.02, 4.0), 0.002);
+  EXPECT_EQ(flowTimeStep(0.4, 0.02, 0.0), HUGE_VAL);
+  // The weakly compressible step carries the speed of sound as well: ten times smaller here.
+  EXPECT_LT(cflTimeStep(0.4, 0.02, 20.0, 2.0), 0.1 * flowTimeStep(0.4, 0.02, 2.0));
+}
+
 }  // namespace
 }  // namespace sph

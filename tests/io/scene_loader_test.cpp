@@ -39,6 +39,13 @@ TEST(SceneLoader, CompleteSceneSetsEveryField) {
   EXPECT_EQ(fluid.restDensity, 998.2);
   EXPECT_EQ(fluid.spacing, 0.02);
   EXPECT_EQ(fluid.supportRatio, 2.5);
+  EXPECT_EQ(fluid.solver, FluidSolver::Dfsph);
+  EXPECT_EQ(fluid.dfsph.densityTolerance, 0.001);
+  EXPECT_EQ(fluid.dfsph.divergenceTolerance, 0.002);
+  EXPECT_EQ(fluid.dfsph.minIterations, 2);
+  EXPECT_EQ(fluid.dfsph.maxIterations, 50);
+  EXPECT_FALSE(fluid.dfsph.warmStart);
+  EXPECT_EQ(fluid.dfsph.forceFactor, 0.05);
   EXPECT_EQ(fluid.kernel, KernelKind::WendlandC2);
   EXPECT_EQ(fluid.eos, EquationOfState::Tait);
   EXPECT_FALSE(fluid.clampNegativePressure);
@@ -52,6 +59,7 @@ TEST(SceneLoader, CompleteSceneSetsEveryField) {
   EXPECT_EQ(fluid.blocks[0].box.min, (Vec3d{0, 0, -0.1}));
   EXPECT_EQ(fluid.blocks[0].box.max, (Vec3d{0.4, 0.6, 0.2}));
   EXPECT_EQ(fluid.blocks[0].velocity, (Vec3d{1, 0, -0.25}));
+  EXPECT_EQ(fluid.blocks[0].angularVelocity, (Vec3d{0, 2, 0}));
   EXPECT_EQ(fluid.blocks[1].box.min, (Vec3d{1, 0, 0}));
   EXPECT_EQ(fluid.blocks[1].box.max, (Vec3d{1.2, 0.1, 0.1}));
   EXPECT_EQ(fluid.blocks[1].velocity, (Vec3d{0, 0, 0}));
@@ -95,6 +103,8 @@ TEST(SceneLoader, AbsentKeysTakeTheDefaultsOfSceneHpp) {
   // A few defaults spelled out, so that a change to scene.hpp is seen here.
   EXPECT_EQ(scene.fluid.spacing, 0.01);
   EXPECT_EQ(scene.fluid.kernel, KernelKind::Muller);
+  EXPECT_EQ(scene.fluid.solver, FluidSolver::Wcsph);
+  EXPECT_EQ(scene.fluid.dfsph.densityTolerance, 0.0005);
   EXPECT_EQ(scene.gravity, (Vec3d{0, -9.81, 0}));
   EXPECT_TRUE(scene.walls.empty());
   EXPECT_FALSE(scene.calibration.speedOfSound.has_value());

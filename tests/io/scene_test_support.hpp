@@ -33,12 +33,16 @@ inline nlohmann::json completeSceneJson() {
     "gravity": [0, -3.7, 0.5],
     "fluid": {
       "rest_density": 998.2, "spacing": 0.02, "support_ratio": 2.5,
+      "solver": "dfsph",
+      "dfsph": {"density_tolerance": 0.001, "divergence_tolerance": 0.002, "min_iterations": 2,
+                "max_iterations": 50, "warm_start": false, "force_factor": 0.05},
       "kernel": "wendland_c2", "eos": "tait", "clamp_negative_pressure": false,
       "pressure_form": "paper",
       "viscosity": {"model": "muller", "value": 0.05, "wall_friction": 0.4},
       "surface_tension": {"coefficient": 0.0728, "threshold": 6.5},
       "blocks": [
-        {"min": [0, 0, -0.1], "max": [0.4, 0.6, 0.2], "velocity": [1, 0, -0.25]},
+        {"min": [0, 0, -0.1], "max": [0.4, 0.6, 0.2], "velocity": [1, 0, -0.25],
+         "angular_velocity": [0, 2, 0]},
         {"min": [1, 0, 0], "max": [1.2, 0.1, 0.1]}
       ]
     },
@@ -83,6 +87,13 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
   EXPECT_EQ(fa.restDensity, fb.restDensity);
   EXPECT_EQ(fa.spacing, fb.spacing);
   EXPECT_EQ(fa.supportRatio, fb.supportRatio);
+  EXPECT_EQ(fa.solver, fb.solver);
+  EXPECT_EQ(fa.dfsph.densityTolerance, fb.dfsph.densityTolerance);
+  EXPECT_EQ(fa.dfsph.divergenceTolerance, fb.dfsph.divergenceTolerance);
+  EXPECT_EQ(fa.dfsph.minIterations, fb.dfsph.minIterations);
+  EXPECT_EQ(fa.dfsph.maxIterations, fb.dfsph.maxIterations);
+  EXPECT_EQ(fa.dfsph.warmStart, fb.dfsph.warmStart);
+  EXPECT_EQ(fa.dfsph.forceFactor, fb.dfsph.forceFactor);
   EXPECT_EQ(fa.kernel, fb.kernel);
   EXPECT_EQ(fa.eos, fb.eos);
   EXPECT_EQ(fa.clampNegativePressure, fb.clampNegativePressure);
@@ -96,6 +107,7 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
   for (std::size_t i = 0; i < fa.blocks.size(); ++i) {
     expectBoxesEqual(fa.blocks[i].box, fb.blocks[i].box);
     EXPECT_EQ(fa.blocks[i].velocity, fb.blocks[i].velocity);
+    EXPECT_EQ(fa.blocks[i].angularVelocity, fb.blocks[i].angularVelocity);
   }
   ASSERT_EQ(a.walls.size(), b.walls.size());
   for (std::size_t i = 0; i < a.walls.size(); ++i) {

@@ -29,7 +29,9 @@ class StatsWriterTest : public testing::Test {
 
 const char* const kHeader =
     "time,steps,dt,fluid_count,boundary_count,kinetic_energy,mean_density,max_density_error,"
-    "max_speed,surface_count,leaked_count,removed_count,wall_ms_per_step,contact_pairs";
+    "max_speed,surface_count,leaked_count,removed_count,wall_ms_per_step,contact_pairs,"
+    "average_density_error,density_iterations_per_step,divergence_iterations_per_step,"
+    "unconverged_solves";
 
 std::vector<std::string> readLines(const fs::path& file) {
   std::ifstream in(file);
@@ -61,6 +63,11 @@ FrameStats makeStats(int row) {
   s.removedCount = 12345678901234ull;
   s.wallMsPerStep = 3.5;
   s.contactPairs = 77;
+  s.averageDensityError = 0.0005;
+  // The solver's totals so far: 3 and 1 iterations a step.
+  s.densityIterations = 3u * s.steps;
+  s.divergenceIterations = s.steps;
+  s.unconvergedSolves = 2;
   return s;
 }
 
@@ -76,13 +83,17 @@ TEST_F(StatsWriterTest, HeaderThenOneFlushedRowPerAppend) {
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0], kHeader);
   EXPECT_EQ(lines[1],
-            "0.25,101,0.00015,8000,1234,1.5,1000.125,0.0125,2.75,300,1,12345678901234,3.5,77");
+            "0.25,101,0.00015,8000,1234,1.5,1000.125,0.0125,2.75,300,1,12345678901234,3.5,77,"
+            "0.0005,3,1,2");
   const std::vector<std::string> fields = split(lines[2]);
-  ASSERT_EQ(fields.size(), 14u);
+  ASSERT_EQ(fields.size(), 18u);
   EXPECT_EQ(std::stod(fields[0]), 0.5);
   EXPECT_EQ(std::stoull(fields[1]), 201u);
   EXPECT_EQ(std::stod(fields[5]), 2.5);
   EXPECT_EQ(std::stoull(fields[10]), 2u);
+  // Per step over the 100 steps since the last row.
+  EXPECT_EQ(std::stod(fields[15]), 3.0);
+  EXPECT_EQ(std::stod(fields[16]), 1.0);
 }
 
 TEST_F(StatsWriterTest, EachObjectHasForceAndCentreColumns) {
@@ -106,12 +117,12 @@ TEST_F(StatsWriterTest, EachObjectHasForceAndCentreColumns) {
                           ",ball_force_x,ball_force_y,ball_force_z,ball_com_x,ball_com_y,"
                           "ball_com_z");
   const std::vector<std::string> fields = split(lines[1]);
-  ASSERT_EQ(fields.size(), 14u + 12u);
-  EXPECT_EQ(std::stod(fields[14]), 1.5);
-  EXPECT_EQ(std::stod(fields[16]), 0.25);
-  EXPECT_EQ(std::stod(fields[19]), 0.3);
-  EXPECT_EQ(std::stod(fields[21]), 9.75);
-  EXPECT_EQ(std::stod(fields[23]), -1.0);
+  ASSERT_EQ(fields.size(), 18u + 12u);
+  EXPECT_EQ(std::stod(fields[18]), 1.5);
+  EXPECT_EQ(std::stod(fields[20]), 0.25);
+  EXPECT_EQ(std::stod(fields[23]), 0.3);
+  EXPECT_EQ(std::stod(fields[25]), 9.75);
+  EXPECT_EQ(std::stod(fields[27]), -1.0);
 }
 
 TEST_F(StatsWriterTest, NewWriterStartsAFreshFile) {

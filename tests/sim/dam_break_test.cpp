@@ -59,12 +59,13 @@ double frontPosition(const Simulation& sim) {
 
 class DamBreak : public ::testing::TestWithParam<Backend> {};
 
-TEST_P(DamBreak, SurgeFrontFollowsMartinAndMoyce) {
-  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
+void expectFrontFollowsMartinAndMoyce(Backend backend, FluidSolver solver) {
   const auto experiment = readMartinMoyce();
   ASSERT_GE(experiment.size(), 15u) << "test data missing";
   const double a = 0.1, g = 9.81;
-  Simulation sim(damBreak(a), testing::on(GetParam()));
+  Scene scene = damBreak(a);
+  scene.fluid.solver = solver;
+  Simulation sim(scene, testing::on(backend));
   double sumError = 0.0;
   int compared = 0;
   for (const FrontPoint& p : experiment) {
@@ -83,6 +84,16 @@ TEST_P(DamBreak, SurgeFrontFollowsMartinAndMoyce) {
   EXPECT_GE(compared, 15);
   EXPECT_LT(sumError / compared, 0.05) << "mean relative error in Z";
   EXPECT_EQ(sim.fluidCount(), sim.calibration().fluidParticles) << "no particle may leave";
+}
+
+TEST_P(DamBreak, SurgeFrontFollowsMartinAndMoyce) {
+  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
+  expectFrontFollowsMartinAndMoyce(GetParam(), FluidSolver::Wcsph);
+}
+
+TEST_P(DamBreak, DfsphSurgeFrontFollowsMartinAndMoyce) {
+  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
+  expectFrontFollowsMartinAndMoyce(GetParam(), FluidSolver::Dfsph);
 }
 
 SPH_ON_EVERY_BACKEND(DamBreak);

@@ -36,10 +36,12 @@ Layer layerAt(const ParticleFrame& f, double y, double thickness, double mass, d
   return layer;
 }
 
-void expectHydrostatic(Backend backend, KernelKind kernel, double tolerance) {
+void expectHydrostatic(Backend backend, KernelKind kernel, double tolerance,
+                       FluidSolver solver = FluidSolver::Wcsph) {
   const double d = 0.01, width = 0.1, height = 0.1;
   Scene scene = testing::restingTank(d, width, height);
   scene.fluid.kernel = kernel;
+  scene.fluid.solver = solver;
   scene.fluid.blocks[0].hydrostatic = true;
   Simulation sim(scene, testing::on(backend));
   // Settled, then averaged over 0.2 s: what is left of the start's oscillation, a few per cent
@@ -81,6 +83,12 @@ void expectHydrostatic(Backend backend, KernelKind kernel, double tolerance) {
   EXPECT_LT(speeds[speeds.size() * 99 / 100], 0.03) << "the bulk is not at rest";
   EXPECT_LT(stats.maxSpeed, 0.15) << "a particle is not at rest";
 
+  if (solver == FluidSolver::Dfsph) {
+    // The solve met its tolerance on the density the step ends with.
+    const SolverStats solve = sim.lastSolve();
+    EXPECT_TRUE(solve.converged);
+    EXPECT_LE(solve.densityError, scene.fluid.dfsph.densityTolerance);
+  }
   for (std::size_t i = 0; i < f.size(); ++i) {
     ASSERT_GT(f.position[3 * i + 1], 0.0f) << "particle " << f.id[i] << " below the floor";
     ASSERT_GT(f.position[3 * i], 0.0f) << "particle " << f.id[i] << " inside a wall";
@@ -103,6 +111,17 @@ TEST_P(RestingTank, CubicSplineHoldsHydrostaticPressureWithin5Percent) {
 TEST_P(RestingTank, MullerHoldsHydrostaticPressureWithin20Percent) {
   SPH_SKIP_UNLESS_AVAILABLE(GetParam());
   expectHydrostatic(GetParam(), KernelKind::Muller, 0.20);
+}
+
+// The incompressible solver: pressure from the solve, not from an equation of state. Measured:
+// 0.2-3.1 % above ρgh by layer. The K of each step's solve only ever pushes, so a fluid that
+// jitters at rest carries a little more than its weight; a tolerance of 0.02 % instead of 0.05 %
+// took 0.5 % off. The target is 2 %. (With the Müller pair the tank stays within 10 % of ρgh but
+// does not come to rest: its poly6 densities and spiky gradients disagree, and the solve,
+// which predicts the one from the other, keeps correcting.)
+TEST_P(RestingTank, DfsphCubicSplineHoldsHydrostaticPressureWithin4Percent) {
+  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
+  expectHydrostatic(GetParam(), KernelKind::CubicSpline, 0.04, FluidSolver::Dfsph);
 }
 
 SPH_ON_EVERY_BACKEND(RestingTank);

@@ -7,5 +7,8 @@ enum class KernelKind { Muller, CubicSpline, WendlandC2 };
 enum class EquationOfState { Linear, Ratio, Tait };  // k(ρ-ρ0), k(ρ/ρ0-1), B((ρ/ρ0)^7-1)
 enum class PressureForm { Paper, Symmetric };        // (p_i+p_j)/(2ρ_j) or p_i/ρ_i²+p_j/ρ_j²
 enum class ViscosityModel { Muller, Artificial };
+// Weakly compressible (an equation of state gives pressure) or incompressible (DFSPH solves
+// for it).
+enum class FluidSolver { Wcsph, Dfsph };
 
 }  // namespace sph

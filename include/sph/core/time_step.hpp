@@ -11,6 +11,11 @@ inline double cflTimeStep(double cfl, double h, double soundSpeed, double maxSpe
   return cfl * h / (soundSpeed + maxSpeed);
 }
 
+// An incompressible solver's step follows the flow: nothing crosses more than cfl·h in a step.
+inline double flowTimeStep(double cfl, double h, double maxSpeed) {
+  return maxSpeed > 0.0 ? cfl * h / maxSpeed : HUGE_VAL;
+}
+
 // A particle must not move more than a fraction of h under its acceleration.
 inline double forceTimeStep(double factor, double h, double maxAcceleration) {
   return maxAcceleration > 0.0 ? factor * std::sqrt(h / maxAcceleration) : HUGE_VAL;

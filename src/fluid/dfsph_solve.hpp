@@ -1,0 +1,205 @@
+// Stages of the incompressible solver (DFSPH, core/dfsph.hpp):
+//   prepareSolver      after the density pass: the records at this step's positions, and β_i
+//   solveDivergence    corrects velocity until it compresses nothing (at the step's start)
+//   solveDensity       after the other forces: corrects the predicted velocity v + Δt a until
+//                      the density it leads to is ρ0, and writes the acceleration that gives it
+// Each solve is Jacobi iterations of two passes, the error measured between them, warm-started
+// from the last step's K. Reads and writes only the solver's arrays and those named.
+#pragma once
+
+#include <cstdint>
+
+#include "fluid/dfsph_passes.hpp"
+#include "fluid/kernel_dispatch.hpp"
+#include "fluid/solver_walk.hpp"
+
+namespace sph::fluid {
+
+template <class B>
+void prepareSolver(FluidParticles<B>& fluid, const Grid<B>& grid,
+                   const BoundaryParticles<B>& boundary, const FluidParameters& params,
+                   NeighborWalk walk) {
+  const std::size_t n = fluid.count;
+  const std::size_t records = kRecordFields * (n + kBatchPadding);
+  fluid.velocityRecords.resize(records);
+  fluid.stiffnessRecords.resize(records);
+  fluid.solverFactor.resize(n);
+  fluid.solverTotal.resize(n);
+  fluid.solverError.resize(n);
+  if (fluid.warmStart.size() < n) {
+    fluid.warmStart.resize(n);
+    Vec4* warm = fluid.warmStart.data();
+    B::forEach(
+        n, SPH_LAMBDA(std::size_t i) {
+          warm[i] = Vec4{0.0f, 0.0f, 0.0f, 0.0f};
+        });
+  }
+  const Vec4* position = fluid.position.data();
+  float* velocityRecords = fluid.velocityRecords.data();
+  float* stiffnessRecords = fluid.stiffnessRecords.data();
+  // The padding is far away, still and without pressure: it never passes a distance test.
+  B::forEach(
+      n + kBatchPadding, SPH_LAMBDA(std::size_t i) {
+        const Vec3 x = i < n ? xyz(position[i]) : Vec3{1e30f, 1e30f, 1e30f};
+        float* v = velocityRecords + kRecordFields * i;
+        float* k = stiffnessRecords + kRecordFields * i;
+        for (std::uint32_t c = 0; c < kRecordFields; ++c) v[c] = k[c] = 0.0f;
+        v[SolverRecord::kX] = k[SolverRecord::kX] = x.x;
+        v[SolverRecord::kY] = k[SolverRecord::kY] = x.y;
+        v[SolverRecord::kZ] = k[SolverRecord::kZ] = x.z;
+      });
+  withKernels(params, [&](auto kernels) {
+    const FactorPass<decltype(kernels)> pass{kernels, params.mass / params.restDensity,
+                                             dfsphSmallestFactorSum(params.h),
+                                             fluid.solverFactor.data()};
+    runSolverPass(fluid, grid, boundary, velocityRecords, params.h, walk, pass);
+  });
+}
+
+namespace detail {
+
+// A solve starts from half the K the last step's solve ended with, where the particle is
+// compressing (RatePass): all of it overshoots, and an overshoot is never taken back, as K
+// never turns negative; it grew from step to step until a resting tank blew apart.
+constexpr float kWarmStartShare = 0.5f;
+
+// The velocities to correct into the records, and the warm start's K (the divergence solve's
+// was kept times its Δt).
+template <class B>
+void beginSolve(FluidParticles<B>& fluid, SolverTarget target, float dt, bool warmStart) {
+  const Vec4* velocity = fluid.velocity.data();
+  const Vec4* acceleration = fluid.acceleration.data();
+  const Vec4* warm = fluid.warmStart.data();
+  float* velocityRecords = fluid.velocityRecords.data();
+  float* stiffnessRecords = fluid.stiffnessRecords.data();
+  float* total = fluid.solverTotal.data();
+  const bool predict = target == SolverTarget::RestDensity;
+  B::forEach(
+      fluid.count, SPH_LAMBDA(std::size_t i) {
+        const Vec3 v = predict ? xyz(velocity[i]) + xyz(acceleration[i]) * dt : xyz(velocity[i]);
+        float* r = velocityRecords + kRecordFields * i;
+        r[SolverRecord::kVX] = v.x;
+        r[SolverRecord::kVY] = v.y;
+        r[SolverRecord::kVZ] = v.z;
+        const float k =
+            !warmStart ? 0.0f : kWarmStartShare * (predict ? warm[i].x : warm[i].y / dt);
+        stiffnessRecords[kRecordFields * i + SolverRecord::kK] = k;
+        total[i] = 0.0f;
+      });
+}
+
+// The corrected velocities out of the records: as the velocity itself (divergence), or as
+// the acceleration that takes the velocity there over Δt (density); the total K kept for the
+// next step's warm start, and the density solve's as the particles' pressure, p = K ρ².
+template <class B>
+void endSolve(FluidParticles<B>& fluid, SolverTarget target, float dt) {
+  Vec4* velocity = fluid.velocity.data();
+  Vec4* acceleration = fluid.acceleration.data();
+  Vec4* warm = fluid.warmStart.data();
+  float* pressure = fluid.pressure.data();
+  const float* density = fluid.density.data();
+  const float* velocityRecords = fluid.velocityRecords.data();
+  const float* total = fluid.solverTotal.data();
+  const bool predict = target == SolverTarget::RestDensity;
+  B::forEach(
+      fluid.count, SPH_LAMBDA(std::size_t i) {
+        const float* r = velocityRecords + kRecordFields * i;
+        const Vec3 v{r[SolverRecord::kVX], r[SolverRecord::kVY], r[SolverRecord::kVZ]};
+        if (predict) {
+          acceleration[i] = makeVec4((v - xyz(velocity[i])) / dt, acceleration[i].w);
+          warm[i].x = total[i];
+          pressure[i] = total[i] * density[i] * density[i];
+        } else {
+          velocity[i] = makeVec4(v, velocity[i].w);
+          warm[i].y = total[i] * dt;
+        }
+      });
+}
+
+// The average of the last rate pass's errors, summed in fixed point (kErrorScale).
+template <class B>
+float averageError(const FluidParticles<B>& fluid) {
+  const std::uint64_t* error = fluid.solverError.data();
+  const std::uint64_t sum = B::reduce(
+      fluid.count, std::uint64_t{0}, SPH_LAMBDA(std::size_t i) { return error[i]; },
+      SPH_LAMBDA(std::uint64_t a, std::uint64_t b) { return a + b; });
+  return float(double(sum) / kErrorScale / double(fluid.count));
+}
+
+template <class B>
+float largestError(const FluidParticles<B>& fluid) {
+  const std::uint64_t* error = fluid.solverError.data();
+  const std::uint64_t largest = B::reduce(
+      fluid.count, std::uint64_t{0}, SPH_LAMBDA(std::size_t i) { return error[i]; },
+      SPH_LAMBDA(std::uint64_t a, std::uint64_t b) { return a > b ? a : b; });
+  return float(double(largest) / kErrorScale);
+}
+
+template <class B, class Kernels>
+SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
+                     const BoundaryParticles<B>& boundary, const FluidParameters& params,
+                     const SolverSettings& settings, SolverTarget target, float dt,
+                     NeighborWalk walk, Kernels kernels) {
+  const RatePass<Kernels> rate{kernels,
+                               target,
+                               params.mass,
+                               params.restDensity,
+                               dt,
+                               settings.minNeighbours,
+                               fluid.velocityRecords.data(),
+                               fluid.density.data(),
+                               fluid.solverFactor.data(),
+                               fluid.neighborCount.data(),
+                               false,
+                               fluid.stiffnessRecords.data(),
+                               fluid.solverError.data()};
+  const VelocityPass<Kernels> correct{kernels,
+                                      params.mass,
+                                      params.restDensity,
+                                      dt,
+                                      fluid.stiffnessRecords.data(),
+                                      fluid.velocityRecords.data(),
+                                      fluid.solverTotal.data()};
+  const float* velocityRecords = fluid.velocityRecords.data();
+  const float* stiffnessRecords = fluid.stiffnessRecords.data();
+  if (settings.warmStart) {
+    RatePass<Kernels> keepWhereCompressing = rate;
+    keepWhereCompressing.warmStartTest = true;
+    runSolverPass(fluid, grid, boundary, velocityRecords, params.h, walk, keepWhereCompressing);
+    runSolverPass(fluid, grid, boundary, stiffnessRecords, params.h, walk, correct);
+  }
+  SolverReport report;
+  for (;;) {
+    runSolverPass(fluid, grid, boundary, velocityRecords, params.h, walk, rate);
+    report.averageError = averageError(fluid);
+    const bool done =
+        report.iterations >= settings.minIterations && report.averageError <= settings.tolerance;
+    if (done || report.iterations >= settings.maxIterations) {
+      report.converged = done;
+      report.largestError = largestError(fluid);
+      return report;
+    }
+    runSolverPass(fluid, grid, boundary, stiffnessRecords, params.h, walk, correct);
+    ++report.iterations;
+  }
+}
+
+}  // namespace detail
+
+// One solve (see above); `dt` is the step the error is predicted over.
+template <class B>
+SolverReport solve(FluidParticles<B>& fluid, const Grid<B>& grid,
+                   const BoundaryParticles<B>& boundary, const FluidParameters& params,
+                   const SolverSettings& settings, SolverTarget target, float dt,
+                   NeighborWalk walk) {
+  SolverReport report;
+  if (fluid.count == 0) return report;
+  detail::beginSolve(fluid, target, dt, settings.warmStart);
+  withKernels(params, [&](auto kernels) {
+    report = detail::iterate(fluid, grid, boundary, params, settings, target, dt, walk, kernels);
+  });
+  detail::endSolve(fluid, target, dt);
+  return report;
+}
+
+}  // namespace sph::fluid
