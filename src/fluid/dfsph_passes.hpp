@@ -33,10 +33,12 @@ struct FactorSum {
 // β_i (core/dfsph.hpp), into solverFactor.
 template <class Kernels>
 struct FactorPass {
+  static constexpr bool kWalls = true;
   Kernels kernels;
   float volume;    // of a fluid particle, m/ρ0
   float smallest;  // dfsphSmallestFactorSum
   float* factor;
+  Vec4* wallGradient;  // G_w = Σ_b ψ_b ∇W_ib, for the passes after this one
 
   template <class S, class V>
   SPH_HD_INLINE FactorSum<S, V> start(std::size_t) const {
@@ -56,8 +58,9 @@ struct FactorPass {
   }
   template <class S, class V>
   SPH_HD_INLINE void finish(std::size_t i, const FactorSum<S, V>& sum) const {
-    factor[i] =
-        dfsphFactor(sumLanes(sum.gradient), sumLanes(sum.wall), sumLanes(sum.squares), smallest);
+    const Vec3 wall = sumLanes(sum.wall);
+    factor[i] = dfsphFactor(sumLanes(sum.gradient), wall, sumLanes(sum.squares), smallest);
+    wallGradient[i] = makeVec4(wall);
   }
 };
 
@@ -69,12 +72,11 @@ struct RateSum {
 
 // From the velocities being corrected, each particle's predicted density error e_i ≥ 0 (a
 // particle is never pulled towards its neighbours: the free surface reads low) and the K_i that
-// would undo it alone (one Jacobi step, Bender & Koschier 2017). As the warm start's test it
-// instead keeps the K_i it finds in the records where the particle is compressing, and zeroes
-// it elsewhere: pushed where nothing compresses, a particle drives the flow apart, which no
-// K ≥ 0 takes back (without the test a resting tank 30 particles deep blew apart).
+// would undo it alone (one Jacobi step, Bender & Koschier 2017).
 template <class Kernels>
 struct RatePass {
+  // The walls are still within the step, so their share is ρ0 v_i·G_w, from the factor pass.
+  static constexpr bool kWalls = false;
   Kernels kernels;
   SolverTarget target;
   float mass, restDensity, dt;
@@ -83,15 +85,17 @@ struct RatePass {
   const float* density;
   const float* factor;
   const std::uint32_t* neighborCount;
-  bool warmStartTest;
+  const Vec4* wallGradient;
   float* stiffnessRecords;
   std::uint64_t* error;
 
+  SPH_HD_INLINE Vec3 velocityOf(std::size_t i) const {
+    const float* r = velocityRecords + kRecordFields * i;
+    return Vec3{r[SolverRecord::kVX], r[SolverRecord::kVY], r[SolverRecord::kVZ]};
+  }
   template <class S, class V>
   SPH_HD_INLINE RateSum<S, V> start(std::size_t i) const {
-    const float* r = velocityRecords + kRecordFields * i;
-    return RateSum<S, V>{
-        spread<V>(Vec3{r[SolverRecord::kVX], r[SolverRecord::kVY], r[SolverRecord::kVZ]})};
+    return RateSum<S, V>{spread<V>(velocityOf(i))};
   }
   template <class S, class V, class M, class C>
   SPH_HD_INLINE void addFluid(RateSum<S, V>& sum, const Pair<S, V, M>& pair,
@@ -100,23 +104,50 @@ struct RatePass {
     const V gradW = pair.rij * pair.where(kernels.gradFactor(pair.r));
     sum.rate += densityRateTerm(S(mass), sum.vi - vj, gradW);
   }
-  template <class S, class V, class M>
-  SPH_HD_INLINE void addWall(RateSum<S, V>& sum, const Pair<S, V, M>& pair, S volumeB) const {
-    const V gradW = pair.rij * pair.where(kernels.gradFactor(pair.r));
-    sum.rate += densityRateTerm(S(restDensity) * volumeB, sum.vi, gradW);
-  }
   template <class S, class V>
   SPH_HD_INLINE void finish(std::size_t i, const RateSum<S, V>& sum) const {
-    const float rate = sumLanes(sum.rate);
+    const float rate = sumLanes(sum.rate) + restDensity * dot(velocityOf(i), xyz(wallGradient[i]));
     const float e = target == SolverTarget::RestDensity
                         ? (density[i] + dt * rate) / restDensity - 1.0f
                         : (neighborCount[i] >= minNeighbours ? dt * rate / restDensity : 0.0f);
     const float counted = e > 0.0f ? e : 0.0f;
-    float& k = stiffnessRecords[kRecordFields * i + SolverRecord::kK];
-    k = warmStartTest ? (counted > 0.0f ? k : 0.0f)
-                      : dfsphStiffness(counted, factor[i], restDensity, dt);
+    stiffnessRecords[kRecordFields * i + SolverRecord::kK] =
+        dfsphStiffness(counted, factor[i], restDensity, dt);
     const float clamped = counted < 1024.0f ? counted : 1024.0f;  // the fixed point's range
     error[i] = static_cast<std::uint64_t>(double(clamped) * kErrorScale);
+  }
+};
+
+// The factor and the first rate pass of a step in one walk over the neighbours: the rate pass
+// reads only particle i's own factor, which the factor pass has just summed.
+template <class Kernels>
+struct FactorAndRatePass {
+  static constexpr bool kWalls = true;
+  FactorPass<Kernels> factor;
+  RatePass<Kernels> rate;
+
+  template <class S, class V>
+  struct Sum {
+    FactorSum<S, V> factor;
+    RateSum<S, V> rate;
+  };
+  template <class S, class V>
+  SPH_HD_INLINE Sum<S, V> start(std::size_t i) const {
+    return {factor.template start<S, V>(i), rate.template start<S, V>(i)};
+  }
+  template <class S, class V, class M, class C>
+  SPH_HD_INLINE void addFluid(Sum<S, V>& sum, const Pair<S, V, M>& pair, const C& columns) const {
+    factor.addFluid(sum.factor, pair, columns);
+    rate.addFluid(sum.rate, pair, columns);
+  }
+  template <class S, class V, class M>
+  SPH_HD_INLINE void addWall(Sum<S, V>& sum, const Pair<S, V, M>& pair, S volumeB) const {
+    factor.addWall(sum.factor, pair, volumeB);
+  }
+  template <class S, class V>
+  SPH_HD_INLINE void finish(std::size_t i, const Sum<S, V>& sum) const {
+    factor.finish(i, sum.factor);
+    rate.finish(i, sum.rate);
   }
 };
 
@@ -130,8 +161,11 @@ struct VelocitySum {
 // wall particle mirroring K_i. Adds K_i to the solve's total.
 template <class Kernels>
 struct VelocityPass {
+  // The walls mirror K_i: their share is -2 ρ0 K_i G_w, from the factor pass.
+  static constexpr bool kWalls = false;
   Kernels kernels;
   float mass, restDensity, dt;
+  const Vec4* wallGradient;
   const float* stiffnessRecords;
   float* velocityRecords;
   float* total;
@@ -145,14 +179,11 @@ struct VelocityPass {
     const V gradW = pair.rij * pair.where(kernels.gradFactor(pair.r));
     sum.dv += pressureAccelerationSymmetric(S(mass), sum.ki, columns[SolverRecord::kK], gradW);
   }
-  template <class S, class V, class M>
-  SPH_HD_INLINE void addWall(VelocitySum<S, V>& sum, const Pair<S, V, M>& pair, S volumeB) const {
-    const V gradW = pair.rij * pair.where(kernels.gradFactor(pair.r));
-    sum.dv += pressureAccelerationSymmetric(S(restDensity) * volumeB, sum.ki, sum.ki, gradW);
-  }
   template <class S, class V>
   SPH_HD_INLINE void finish(std::size_t i, const VelocitySum<S, V>& sum) const {
-    const Vec3 dv = sumLanes(sum.dv) * dt;
+    const float ki = stiffnessRecords[kRecordFields * i + SolverRecord::kK];
+    const Vec3 walls = pressureAccelerationSymmetric(restDensity, ki, ki, xyz(wallGradient[i]));
+    const Vec3 dv = (sumLanes(sum.dv) + walls) * dt;
     float* r = velocityRecords + kRecordFields * i;
     r[SolverRecord::kVX] += dv.x;
     r[SolverRecord::kVY] += dv.y;

@@ -1,7 +1,8 @@
 // Stages of the incompressible solver (DFSPH, core/dfsph.hpp):
-//   prepareSolver      after the density pass: the records at this step's positions, and β_i
-//   solveDivergence    corrects velocity until it compresses nothing (at the step's start)
-//   solveDensity       after the other forces: corrects the predicted velocity v + Δt a until
+//   prepareSolver      after the density pass: the records at this step's positions
+//   solve NoDivergence corrects velocity until it compresses nothing (at the step's start); its
+//                      first pass also gives each particle's factor β_i for the step
+//   solve RestDensity  after the other forces: corrects the predicted velocity v + Δt a until
 //                      the density it leads to is ρ0, and writes the acceleration that gives it
 // Each solve is Jacobi iterations of two passes, the error measured between them, warm-started
 // from the last step's K. Reads and writes only the solver's arrays and those named.
@@ -16,14 +17,13 @@
 namespace sph::fluid {
 
 template <class B>
-void prepareSolver(FluidParticles<B>& fluid, const Grid<B>& grid,
-                   const BoundaryParticles<B>& boundary, const FluidParameters& params,
-                   NeighborWalk walk) {
+void prepareSolver(FluidParticles<B>& fluid) {
   const std::size_t n = fluid.count;
   const std::size_t records = kRecordFields * (n + kBatchPadding);
   fluid.velocityRecords.resize(records);
   fluid.stiffnessRecords.resize(records);
   fluid.solverFactor.resize(n);
+  fluid.solverWallGradient.resize(n);
   fluid.solverTotal.resize(n);
   fluid.solverError.resize(n);
   if (fluid.warmStart.size() < n) {
@@ -48,28 +48,25 @@ void prepareSolver(FluidParticles<B>& fluid, const Grid<B>& grid,
         v[SolverRecord::kY] = k[SolverRecord::kY] = x.y;
         v[SolverRecord::kZ] = k[SolverRecord::kZ] = x.z;
       });
-  withKernels(params, [&](auto kernels) {
-    const FactorPass<decltype(kernels)> pass{kernels, params.mass / params.restDensity,
-                                             dfsphSmallestFactorSum(params.h),
-                                             fluid.solverFactor.data()};
-    runSolverPass(fluid, grid, boundary, velocityRecords, params.h, walk, pass);
-  });
 }
 
 namespace detail {
 
-// A solve starts from half the K the last step's solve ended with, where the particle is
-// compressing (RatePass): all of it overshoots, and an overshoot is never taken back, as K
-// never turns negative; it grew from step to step until a resting tank blew apart.
+// A solve starts from half the K the last step's solve ended with, and only in the bulk (ρ_i ≥
+// ρ0 at the step's start): all of it overshoots, and an overshoot is never taken back, as K
+// never turns negative; it grew from step to step until a resting tank blew apart. Pushed
+// where nothing compresses, a particle drives the flow apart as well: a resting tank 30
+// particles deep blew apart without the test.
 constexpr float kWarmStartShare = 0.5f;
 
-// The velocities to correct into the records, and the warm start's K (the divergence solve's
-// was kept times its Δt).
+// The velocities to correct into the records, and the density solve's warm start K.
 template <class B>
-void beginSolve(FluidParticles<B>& fluid, SolverTarget target, float dt, bool warmStart) {
+void beginSolve(FluidParticles<B>& fluid, SolverTarget target, float dt, bool warmStart,
+                float restDensity) {
   const Vec4* velocity = fluid.velocity.data();
   const Vec4* acceleration = fluid.acceleration.data();
   const Vec4* warm = fluid.warmStart.data();
+  const float* density = fluid.density.data();
   float* velocityRecords = fluid.velocityRecords.data();
   float* stiffnessRecords = fluid.stiffnessRecords.data();
   float* total = fluid.solverTotal.data();
@@ -81,16 +78,16 @@ void beginSolve(FluidParticles<B>& fluid, SolverTarget target, float dt, bool wa
         r[SolverRecord::kVX] = v.x;
         r[SolverRecord::kVY] = v.y;
         r[SolverRecord::kVZ] = v.z;
-        const float k =
-            !warmStart ? 0.0f : kWarmStartShare * (predict ? warm[i].x : warm[i].y / dt);
+        const bool bulk = density[i] >= restDensity;
+        const float k = !warmStart || !bulk || !predict ? 0.0f : kWarmStartShare * warm[i].x;
         stiffnessRecords[kRecordFields * i + SolverRecord::kK] = k;
         total[i] = 0.0f;
       });
 }
 
 // The corrected velocities out of the records: as the velocity itself (divergence), or as
-// the acceleration that takes the velocity there over Δt (density); the total K kept for the
-// next step's warm start, and the density solve's as the particles' pressure, p = K ρ².
+// the acceleration that takes the velocity there over Δt (density), with the density solve's
+// total K kept for the next step's warm start and given as the particles' pressure, p = K ρ².
 template <class B>
 void endSolve(FluidParticles<B>& fluid, SolverTarget target, float dt) {
   Vec4* velocity = fluid.velocity.data();
@@ -111,7 +108,6 @@ void endSolve(FluidParticles<B>& fluid, SolverTarget target, float dt) {
           pressure[i] = total[i] * density[i] * density[i];
         } else {
           velocity[i] = makeVec4(v, velocity[i].w);
-          warm[i].y = total[i] * dt;
         }
       });
 }
@@ -150,27 +146,34 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
                                fluid.density.data(),
                                fluid.solverFactor.data(),
                                fluid.neighborCount.data(),
-                               false,
+                               fluid.solverWallGradient.data(),
                                fluid.stiffnessRecords.data(),
                                fluid.solverError.data()};
   const VelocityPass<Kernels> correct{kernels,
                                       params.mass,
                                       params.restDensity,
                                       dt,
+                                      fluid.solverWallGradient.data(),
                                       fluid.stiffnessRecords.data(),
                                       fluid.velocityRecords.data(),
                                       fluid.solverTotal.data()};
   const float* velocityRecords = fluid.velocityRecords.data();
   const float* stiffnessRecords = fluid.stiffnessRecords.data();
-  if (settings.warmStart) {
-    RatePass<Kernels> keepWhereCompressing = rate;
-    keepWhereCompressing.warmStartTest = true;
-    runSolverPass(fluid, grid, boundary, velocityRecords, params.h, walk, keepWhereCompressing);
+  // Only the density solve starts warm: the divergence solve comes first in a step, and its
+  // first pass finds the step's factors and wall gradients that a warm start would need.
+  if (settings.warmStart && target == SolverTarget::RestDensity)
     runSolverPass(fluid, grid, boundary, stiffnessRecords, params.h, walk, correct);
-  }
   SolverReport report;
   for (;;) {
-    runSolverPass(fluid, grid, boundary, velocityRecords, params.h, walk, rate);
+    if (report.iterations == 0 && target == SolverTarget::NoDivergence) {
+      const FactorAndRatePass<Kernels> first{
+          {kernels, params.mass / params.restDensity, dfsphSmallestFactorSum(params.h),
+           fluid.solverFactor.data(), fluid.solverWallGradient.data()},
+          rate};
+      runSolverPass(fluid, grid, boundary, velocityRecords, params.h, walk, first);
+    } else {
+      runSolverPass(fluid, grid, boundary, velocityRecords, params.h, walk, rate);
+    }
     report.averageError = averageError(fluid);
     const bool done =
         report.iterations >= settings.minIterations && report.averageError <= settings.tolerance;
@@ -194,7 +197,7 @@ SolverReport solve(FluidParticles<B>& fluid, const Grid<B>& grid,
                    NeighborWalk walk) {
   SolverReport report;
   if (fluid.count == 0) return report;
-  detail::beginSolve(fluid, target, dt, settings.warmStart);
+  detail::beginSolve(fluid, target, dt, settings.warmStart, params.restDensity);
   withKernels(params, [&](auto kernels) {
     report = detail::iterate(fluid, grid, boundary, params, settings, target, dt, walk, kernels);
   });

@@ -61,10 +61,11 @@ struct FluidParticles {
   // written; stiffnessRecords x, y, z, K, read while velocityRecords are written.
   Buffer<float> velocityRecords, stiffnessRecords;
   Buffer<float> solverFactor;         // β_i (core/dfsph.hpp), per step
+  Buffer<Vec4> solverWallGradient;    // xyz: G_w = Σ_b ψ_b ∇W_ib, per step
   Buffer<float> solverTotal;          // Σ K_i applied this solve
   Buffer<std::uint64_t> solverError;  // the last iteration's e_i, fixed point (kErrorScale)
-  // Kept across steps, reordered with the particles by buildGrid: x, the density solver's
-  // Σ K_i; y, the divergence solver's Σ K_i times its Δt. Empty unless the solver runs.
+  // Kept across steps, reordered with the particles by buildGrid: x, the density solve's
+  // total K. Empty unless the solver runs.
   Buffer<Vec4> warmStart;
 };
 

@@ -4,7 +4,7 @@
 // reference) or a SIMD batch at a time (the CPU). A pass is a struct with
 //   Sum start<S, V>(i)                      what particle i sums, zeroed
 //   addFluid(sum, pair, columns)            a fluid neighbour: columns[c] is float c of its record
-//   addWall(sum, pair, volume)              a wall particle of volume ψ_b
+//   addWall(sum, pair, volume)              a wall particle of volume ψ_b, if kWalls
 //   finish(i, sum)                          writes particle i's result
 // with S, V = float, Vec3 or FloatBatch, BatchVec3: the pass is written once for both walks.
 #pragma once
@@ -40,13 +40,15 @@ void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
           if (r2 >= h2) return;
           pass.addFluid(sum, makePair(rij, r2, true, h2), columns);
         });
-        forEachWallNeighbor(walls, xi, [&](std::uint32_t b) {
-          const Vec4 xb = readOnly(wall + b);
-          const Vec3 rib = xi - xyz(xb);
-          const float r2 = lengthSquared(rib);
-          if (r2 >= h2 || r2 <= 0.0f) return;
-          pass.addWall(sum, makePair(rib, r2, true, h2), xb.w);
-        });
+        if constexpr (Pass::kWalls) {
+          forEachWallNeighbor(walls, xi, [&](std::uint32_t b) {
+            const Vec4 xb = readOnly(wall + b);
+            const Vec3 rib = xi - xyz(xb);
+            const float r2 = lengthSquared(rib);
+            if (r2 >= h2 || r2 <= 0.0f) return;
+            pass.addWall(sum, makePair(rib, r2, true, h2), xb.w);
+          });
+        }
         pass.finish(i, sum);
       });
 }
@@ -94,13 +96,15 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
           gatherRecords(records, at, columns);
           add(columns, candidates);
         });
-    forEachWallBatch(walls, xs, [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
-      const BatchVec3 rib = xi - loadBatch(wx, wy, wz, b);
-      const FloatBatch r2 = dot(rib, rib);
-      const auto near = candidates && r2 < h2Batch && r2 > zero;
-      if (stdx::none_of(near)) return;
-      pass.addWall(sum, makePair(rib, r2, near, h2), loadBatch(wv, b));
-    });
+    if constexpr (Pass::kWalls) {
+      forEachWallBatch(walls, xs, [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
+        const BatchVec3 rib = xi - loadBatch(wx, wy, wz, b);
+        const FloatBatch r2 = dot(rib, rib);
+        const auto near = candidates && r2 < h2Batch && r2 > zero;
+        if (stdx::none_of(near)) return;
+        pass.addWall(sum, makePair(rib, r2, near, h2), loadBatch(wv, b));
+      });
+    }
     pass.finish(i, sum);
   });
 }

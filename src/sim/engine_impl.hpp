@@ -91,7 +91,7 @@ class EngineImpl final : public FluidEngine {
     fluid::computeDensityAndPressure(fluid_, grid_, boundary_, params_, walk_);
   }
   void computeForces() override { fluid::computeForces(fluid_, grid_, boundary_, params_, walk_); }
-  void prepareSolver() override { fluid::prepareSolver(fluid_, grid_, boundary_, params_, walk_); }
+  void prepareSolver() override { fluid::prepareSolver(fluid_); }
   fluid::SolverReport solve(const fluid::SolverSettings& settings, fluid::SolverTarget target,
                             float dt) override {
     return fluid::solve(fluid_, grid_, boundary_, params_, settings, target, dt, walk_);

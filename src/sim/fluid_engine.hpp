@@ -65,9 +65,9 @@ class FluidEngine {
   virtual void computeDensityAndPressure() = 0;
   virtual void computeForces() = 0;
   virtual fluid::StepMeasures measureStep() = 0;
-  // The incompressible solver (DFSPH): its factors at this step's positions, after the density
-  // pass; then each solve corrects the velocity (NoDivergence) or the acceleration
-  // (RestDensity, after the other forces, over the step dt).
+  // The incompressible solver (DFSPH): its records at this step's positions, after the density
+  // pass; then each solve corrects the velocity (NoDivergence, first: it also finds the
+  // factors) or the acceleration (RestDensity, after the other forces, over the step dt).
   virtual void prepareSolver() = 0;
   virtual fluid::SolverReport solve(const fluid::SolverSettings& settings,
                                     fluid::SolverTarget target, float dt) = 0;
