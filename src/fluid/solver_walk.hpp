@@ -30,6 +30,10 @@ void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const float* ri = records + kRecordFields * i;
         const Vec3 xi{ri[0], ri[1], ri[2]};
+        // Named here, not first inside `if constexpr`: nvcc's device lambdas may not capture
+        // there.
+        (void)walls;
+        (void)wall;
         auto sum = pass.template start<float, Vec3>(i);
         forEachListedNeighbor(lists, i, xi, [&](std::uint32_t j) {
           const float* rj = records + kRecordFields * j;
