@@ -75,7 +75,7 @@ struct RateSum {
 // would undo it alone (one Jacobi step, Bender & Koschier 2017).
 template <class Kernels>
 struct RatePass {
-  // The walls are still within the step, so their share is ρ0 v_i·G_w, from the factor pass.
+  // Walls do not move within a step: their share is ρ0 v_i·G_w, kept by the factor pass.
   static constexpr bool kWalls = false;
   Kernels kernels;
   SolverTarget target;
@@ -113,7 +113,8 @@ struct RatePass {
     const float counted = e > 0.0f ? e : 0.0f;
     stiffnessRecords[kRecordFields * i + SolverRecord::kK] =
         dfsphStiffness(counted, factor[i], restDensity, dt);
-    const float clamped = counted < 1024.0f ? counted : 1024.0f;  // the fixed point's range
+    // The fixed point's range: 16 × 2³² a particle leaves room in 64 bits for 2³⁸ particles.
+    const float clamped = counted < 16.0f ? counted : 16.0f;
     error[i] = static_cast<std::uint64_t>(double(clamped) * kErrorScale);
   }
 };
