@@ -1,8 +1,9 @@
-// Google Benchmarks of each stage of a step alone, on the CPU backend: the box drop (seed 1 §10)
-// after 20 steps, at the paper's particle counts. Each stage is called as Simulation::step calls
-// it, through the engine, and is valid to repeat on its own: building the grid of particles
-// already in cell order, recomputing density, pressure and forces from the same positions,
-// reducing the same measures, integrating with a step too small to move anything.
+// Google Benchmarks of each stage of a step alone, on the CPU backend: the box drop
+// (Meteer 2011, §10) after 20 steps, at the paper's particle counts. Each stage is called as
+// Simulation::step calls it, through the engine, and is valid to repeat on its own: building the
+// grid of particles already in cell order, recomputing density, pressure and forces from the
+// same positions, reducing the same measures, integrating with a step too small to move
+// anything.
 #include <benchmark/benchmark.h>
 
 #include <cstdint>

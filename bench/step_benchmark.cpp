@@ -1,4 +1,4 @@
-// Google Benchmark of a whole step on the seed's box drop, with each stage's share as
+// Google Benchmark of a whole step on the box drop of Meteer 2011, with each stage's share as
 // counters. `sph bench` prints the same measurement as a table; this one plugs into
 // benchmark tooling (--benchmark_format=json, repetitions, comparisons).
 #include <benchmark/benchmark.h>

@@ -1,5 +1,5 @@
-// sph bench: the seed's box drop at the paper's particle counts, milliseconds per step by
-// stage (median over the timed steps), and particle-steps per second.
+// sph bench: the box drop of Meteer 2011 at the paper's particle counts, milliseconds per step
+// by stage (median over the timed steps), and particle-steps per second.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>

@@ -1,4 +1,4 @@
-// The sph subcommands (DESIGN.md's command-line contract). Each returns the process exit code:
+// The sph subcommands (the command-line contract in README.md). Each returns the process exit code:
 // 0 done, 2 bad input, 3 the simulation failed.
 #pragma once
 
@@ -62,7 +62,7 @@ struct BenchOptions {
   std::vector<std::string> scenes;  // also time these scene files
   std::vector<std::string> overrides;
   std::string json;  // also write the results here
-  // Seed 1 §9: each scene with objects is timed at each of these influence ratios.
+  // Meteer 2011, §9: each scene with objects is timed at each of these influence ratios.
   std::vector<double> influenceRatios;
   // Each size and scene is timed with each of these solvers ("wcsph", "dfsph"); none: the
   // scene's own.

@@ -89,7 +89,8 @@ int main(int argc, char** argv) {
   viewCmd->add_option("--screenshot", view.screenshot, "Write the last frame to this PNG file");
 
   BenchOptions bench;
-  auto* benchCmd = app.add_subcommand("bench", "Milliseconds per step by stage (seed's box drop)");
+  auto* benchCmd =
+      app.add_subcommand("bench", "Milliseconds per step by stage (Meteer 2011's box drop)");
   benchCmd->add_option("--sizes", bench.sizes, "Particle counts")->delimiter(',');
   benchCmd->add_option("--backend", bench.backend, "cpu, cuda or auto")
       ->check(CLI::IsMember({"cpu", "cuda", "auto"}));
@@ -105,7 +106,7 @@ int main(int argc, char** argv) {
   benchCmd
       ->add_option("--influence", bench.influenceRatios,
                    "Time each --scene with objects at these influence sphere radii (x the object "
-                   "particle radius), e.g. 1,1.5,2,3 (seed 1 §9)")
+                   "particle radius), e.g. 1,1.5,2,3 (Meteer 2011, §9)")
       ->delimiter(',')
       ->check(CLI::Range(1.0, 4.0));
   benchCmd

@@ -11,7 +11,7 @@
 
 namespace sph::cli {
 
-// The derived values (seed 1 §8.1), each marked derived or set by the scene.
+// The derived values (Meteer 2011, §8.1), each marked derived or set by the scene.
 void printCalibration(std::FILE* out, const Simulation& sim);
 
 nlohmann::json calibrationJson(const Calibration& c);

@@ -70,7 +70,8 @@ int runCommand(const RunOptions& options) {
     printCalibration(stdout, sim);
     if (std::string(sim.backendName()) == "cuda") {
       std::printf("  backend              cuda, device %d\n", options.device);
-      printGpus(stdout);  // seed 2's memory report: what the GPU holds and has free
+      // The 2021 CUDA SPH tutorial's memory report: what the GPU holds and has free.
+      printGpus(stdout);
     } else {
       std::printf("  backend              cpu, %d threads\n", backend::threadCount());
     }

@@ -1,6 +1,6 @@
-// The files of one run (DESIGN.md): DIR/frames/frame_NNNNN.EXT, DIR/frames.pvd, DIR/stats.csv,
-// DIR/summary.json and the walls in DIR/boundary.EXT. An earlier run is never overwritten unless
-// asked.
+// The files of one run (README.md, Outputs): DIR/frames/frame_NNNNN.EXT, DIR/frames.pvd,
+// DIR/stats.csv, DIR/summary.json and the walls in DIR/boundary.EXT. An earlier run is never
+// overwritten unless asked.
 #pragma once
 
 #include <condition_variable>

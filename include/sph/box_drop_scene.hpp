@@ -1,4 +1,4 @@
-// The seed's benchmark scene (seed 1 §10): N particles dropped in a box the size of the grid.
+// The benchmark scene of Meteer 2011, §10: N particles dropped in a box the size of the grid.
 #pragma once
 
 #include "sph/scene.hpp"

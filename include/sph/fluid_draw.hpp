@@ -15,7 +15,7 @@ enum class FluidQuantity : std::uint8_t {
   Density,   // kg/m³
   Pressure,  // Pa
   Speed,     // m/s
-  Surface,   // 1 on the free surface (seed 1 eqs. 11-12), else 0
+  Surface,   // 1 on the free surface (Meteer 2011, eqs. 11-12), else 0
 };
 
 struct FluidDrawTarget {

@@ -20,7 +20,7 @@ struct ParticleFrame {
   std::vector<float> pressure;  // Pa
   std::vector<std::uint8_t> kind;
   std::vector<std::int32_t> object;  // -1 for fluid and static walls
-  // 1 for fluid particles on the free surface (seed 1 eqs. 11-12: |∇c| at the frame's
+  // 1 for fluid particles on the free surface (Meteer 2011, eqs. 11-12: |∇c| at the frame's
   // positions, over the last step's neighbours) and object particles on their object's
   // surface.
   std::vector<std::uint8_t> surface;

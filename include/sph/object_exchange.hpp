@@ -1,6 +1,6 @@
-// The exchange between the fluid and a physics engine for particle-based objects (seed 1 §4.3,
-// §7.2, figure 1). Any engine that can publish its objects' surface particles and accept forces
-// on them can be coupled: the built-in one (src/objects) or your own.
+// The exchange between the fluid and a physics engine for particle-based objects (Meteer 2011,
+// §4.3, §7.2, figure 1). Any engine that can publish its objects' surface particles and accept
+// forces on them can be coupled: the built-in one (src/objects) or your own.
 //
 // Both directions are double-buffered, so the engine may run in its own thread at its own
 // rate. The engine fills `back()` and calls `publish()`; the fluid reads the newest publication

@@ -45,7 +45,8 @@ struct WallTank {
 struct DomainDesc {
   AxisBox box;
   OutsidePolicy outside = OutsidePolicy::Remove;
-  bool dampedBox = false;  // seed 2: reflect at the domain faces, velocity scaled by -damping
+  // Reflect at the domain faces, velocity scaled by -damping (the 2021 CUDA SPH tutorial).
+  bool dampedBox = false;
   double damping = 0.5;
 };
 
@@ -77,7 +78,7 @@ struct FluidDesc {
   double wallFriction = 0.0;    // fraction of the fluid viscosity applied against walls
   double surfaceTension = 0.0;  // σ (N/m); 0 disables
   // |∇c| (1/m) above which a particle is on the surface and surface tension acts; unset: 0.22/h,
-  // seed 2's 7.065 at its h = 1/32, scaled to ours.
+  // the 2021 CUDA SPH tutorial's 7.065 at its h = 1/32, scaled to ours.
   std::optional<double> surfaceThreshold;
   std::vector<FluidBlock> blocks;
 };
@@ -108,7 +109,7 @@ struct FailureDesc {
   double maxDensityError = 0.5;  // compression ρ/ρ0 - 1 past which the run stops as failed
 };
 
-// Particle-based objects (seed 1 §4.3, §7) for the built-in object engine (src/objects).
+// Particle-based objects (Meteer 2011, §4.3, §7) for the built-in object engine (src/objects).
 enum class ObjectMotion { Rigid, Deformable, Kinematic };
 enum class ShapeKind { Box, Sphere, Capsule, Tube, Mesh };
 
@@ -159,7 +160,7 @@ struct ObjectDesc {
   std::vector<KeyframeDesc> keyframes;
 };
 
-// Fluid–object contact (seed 1 §7.4, §8.2, §8.3). Unset values are derived by calibration.
+// Fluid–object contact (Meteer 2011, §7.4, §8.2, §8.3). Unset values are derived by calibration.
 struct InteractionDesc {
   double influenceRatio = 1.5;            // influence sphere radius / object particle radius
   double distanceExponent = 4.0;          // β of the distance function exp(β (1 - q))
@@ -170,7 +171,7 @@ struct InteractionDesc {
   bool cutAwareDamping = true;            // no damping against particles whose springs broke
 };
 
-// How the object engine runs beside the fluid (seed 1 figure 1).
+// How the object engine runs beside the fluid (Meteer 2011, figure 1).
 struct ObjectEngineDesc {
   double rate = 1.0;      // engine steps per fluid step: 2 runs it twice as often, 0.5 half
   bool ownThread = true;  // in its own thread, in lock-step with the fluid (deterministic)

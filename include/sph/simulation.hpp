@@ -18,7 +18,7 @@
 
 namespace sph {
 
-// The values a run uses, derived from the scene (seed 1 §8.1) unless the scene set them.
+// The values a run uses, derived from the scene (Meteer 2011, §8.1) unless the scene set them.
 struct Calibration {
   double spacing = 0.0;             // d, m
   double supportRadius = 0.0;       // h, m
@@ -33,7 +33,7 @@ struct Calibration {
   bool maxExpectedSpeedFromScene = false;
   bool soundSpeedFromScene = false;
   bool stiffnessFromScene = false;
-  // Fluid–object contact (seed 1 eqs. 13-15), when the scene has objects.
+  // Fluid–object contact (Meteer 2011, eqs. 13-15), when the scene has objects.
   double contactStiffness = 0.0;  // k_spring, N/m
   double contactDamping = 0.0;    // k_damping, N·s/m
   double contactShear = 0.0;      // k_shear, N·s/m
@@ -47,13 +47,13 @@ struct Calibration {
   std::uint64_t boundaryParticles = 0;
 };
 
-// Wall-clock milliseconds of each stage of the last step (DESIGN.md: the step's profile).
+// Wall-clock milliseconds of each stage of the last step (the step's profile).
 struct StepProfile {
   double buildGrid = 0.0;
   double densityPressure = 0.0;
   double divergenceSolve = 0.0;  // DFSPH
   double forces = 0.0;
-  double interaction = 0.0;  // collisions and contact forces with objects (seed 1 §7)
+  double interaction = 0.0;  // collisions and contact forces with objects (Meteer 2011, §7)
   double timeStep = 0.0;
   double densitySolve = 0.0;  // DFSPH
   double integrate = 0.0;
@@ -163,7 +163,7 @@ class Simulation {
 
   // The objects of the scene, as their engine has them now.
   std::vector<ObjectStats> objectStats() const;
-  // Fluid particles outside the object that held them at the start (seed 1 §9), counting
+  // Fluid particles outside the object that held them at the start (Meteer 2011, §9), counting
   // those that were removed after leaving.
   std::uint64_t leakedCount() const;
   // Where each particle that ever left its container first left it (x, y, z per particle).

@@ -1,4 +1,4 @@
-// Per-frame statistics: one row of stats.csv (DESIGN.md's command-line contract).
+// Per-frame statistics: one row of stats.csv (the command-line contract in README.md).
 #pragma once
 
 #include <array>

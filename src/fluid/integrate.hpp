@@ -1,5 +1,6 @@
-// Stage: symplectic Euler, v += dt a then x += dt v; then the seed's damped box, or the clamp
-// policy, keeps particles in the domain. Returns how many the clamp put back.
+// Stage: symplectic Euler, v += dt a then x += dt v; then the damped box of the 2021 CUDA SPH
+// tutorial, or the clamp policy, keeps particles in the domain. Returns how many the clamp put
+// back.
 #pragma once
 
 #include "fluid/parameters.hpp"
@@ -9,8 +10,8 @@ namespace sph::fluid {
 
 namespace detail {
 
-// Seed 2's box: a particle past a face is put back on it, its normal velocity reversed and
-// scaled by the damping.
+// The 2021 CUDA SPH tutorial's box: a particle past a face is put back on it, its normal
+// velocity reversed and scaled by the damping.
 SPH_HD void reflect(float& x, float& v, float lo, float hi, float damping) {
   if (x < lo) {
     x = lo;

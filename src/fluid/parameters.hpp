@@ -1,5 +1,5 @@
 // The numbers every pass reads, derived once by sim/calibration. Passed by value to the
-// per-particle code (constant memory on the GPU, seed 1 §5.3).
+// per-particle code (constant memory on the GPU, Meteer 2011, §5.3).
 #pragma once
 
 #include "sph/core/grid.hpp"
@@ -31,8 +31,8 @@ struct FluidParameters {
 // does, the reference the first is tested and timed against. The GPU ignores it.
 enum class NeighborWalk { Batched, OneAtATime };
 
-// The explicit domain: what lies outside is removed or clamped; the seed's damped box
-// reflects at its faces.
+// The explicit domain: what lies outside is removed or clamped; the damped box of the
+// 2021 CUDA SPH tutorial reflects at its faces.
 struct DomainParameters {
   Vec3 min, max;
   bool clampOutside;

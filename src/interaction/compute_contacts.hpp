@@ -1,4 +1,4 @@
-// Stage: collision detection and contact forces between fluid and object particles (seed 1
+// Stage: collision detection and contact forces between fluid and object particles (Meteer 2011,
 // §7.3-7.4, Algorithm 3, §8.2-8.3), equal and opposite:
 //   fluid pass   each fluid particle sums the forces from the object particles it touches,
 //                adds them to its acceleration and clamps the total (§8.3); it also updates
@@ -28,7 +28,7 @@ SPH_HD bool nearGrid(const GridSpec& g, Vec3 p) {
          c.z <= g.dims.z;
 }
 
-// The force on fluid particle (xf, vf) from object particle (xo, vo, radius, cut): seed 1
+// The force on fluid particle (xf, vf) from object particle (xo, vo, radius, cut): Meteer 2011,
 // eqs. 13-16 through the influence sphere, the spring scaled by the distance function.
 SPH_HD Vec3 fluidContactForce(const InteractionParameters& p, Vec3 xf, Vec3 vf, Vec4 xo, Vec4 vo) {
   const float reach = contactReach(p, xo.w);

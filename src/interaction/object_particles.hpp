@@ -1,4 +1,4 @@
-// The objects' surface particles as the fluid sees them (seed 1 §7.2), in the memory of
+// The objects' surface particles as the fluid sees them (Meteer 2011, §7.2), in the memory of
 // backend B, sorted by the cells of their own grid, and the numbers the contact pass reads.
 #pragma once
 
@@ -11,7 +11,7 @@
 
 namespace sph::interaction {
 
-// Passed by value to the per-particle code (constant memory on the GPU, seed 1 §8.2).
+// Passed by value to the per-particle code (constant memory on the GPU, Meteer 2011, §8.2).
 struct InteractionParameters {
   ContactCoefficients contact;
   DistanceFunctionTable distance;
@@ -23,7 +23,7 @@ struct InteractionParameters {
 };
 
 // The largest distance at which a fluid particle and an object particle of radius
-// `objectRadius` touch through the influence sphere (seed 1 §8.2, figure 6).
+// `objectRadius` touch through the influence sphere (Meteer 2011, §8.2, figure 6).
 SPH_HD float contactReach(const InteractionParameters& p, float objectRadius) {
   return p.fluidRadius + p.influenceRatio * objectRadius;
 }
@@ -47,7 +47,7 @@ struct ObjectParticles {
   Buffer<Vec4> force;  // xyz; w: fluid particles in contact
 };
 
-// Leak tracking (DESIGN.md: an intact vessel leaks nothing), by fluid particle id.
+// Leak tracking (an intact vessel leaks nothing), by fluid particle id.
 template <class B>
 struct ContainmentState {
   template <class T>

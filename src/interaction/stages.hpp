@@ -1,4 +1,4 @@
-// The stages of the interaction with objects (seed 1 §7), templates on the backend B like the
+// The stages of the interaction with objects (Meteer 2011, §7), templates on the backend B like the
 // fluid's: written once, compiled by g++ for the CPU and by nvcc for the GPU.
 #pragma once
 

@@ -1,4 +1,4 @@
-// stats.csv: one row of FrameStats per output frame (DESIGN.md's command-line contract).
+// stats.csv: one row of FrameStats per output frame (the command-line contract in README.md).
 #pragma once
 
 #include <cstdio>

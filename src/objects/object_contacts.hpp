@@ -1,5 +1,5 @@
 // Contact between particles of different objects by the discrete element method
-// (core/contact.hpp, seed 1 eqs. 13-15), found through a uniform grid rebuilt every substep.
+// (core/contact.hpp, Meteer 2011, eqs. 13-15), found through a uniform grid rebuilt every substep.
 #pragma once
 
 #include <cstdint>

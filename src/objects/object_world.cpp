@@ -26,7 +26,8 @@ namespace {
 constexpr double kStepPerOmega = 0.3;
 // Explicit damping c on a mass m is stable for c h / m < 2; several contacts or springs add up.
 constexpr double kStepPerDampingRate = 0.25;
-// No particle moves more than this fraction of its radius per substep (seed 1 §8.3 tunnelling).
+// No particle moves more than this fraction of its radius per substep, so nothing tunnels
+// (Meteer 2011, §8.3).
 constexpr double kMaxTravelPerRadius = 0.25;
 // Default spring stiffness: the object's weight hung on one spring strains it by 1 %.
 constexpr double kDefaultWeightStrain = 0.01;

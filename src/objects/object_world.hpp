@@ -1,4 +1,4 @@
-// The built-in engine for particle-based objects (DESIGN.md layer 5, seed 1 §4.3): rigid bodies
+// The built-in engine for particle-based objects (Meteer 2011, §4.3): rigid bodies
 // (Newton–Euler), deformables (particles joined by springs that can break), pinned particles
 // and kinematic actuators that follow keyframes. Runs on the host; the fluid sees only the
 // surface particles it publishes and returns forces on them (interaction/exchange).

@@ -1,4 +1,4 @@
-// A rigid body made of particles (seed 1 §4.3): Newton–Euler motion of the centre of mass and
+// A rigid body made of particles (Meteer 2011, §4.3): Newton–Euler motion of the centre of mass and
 // the orientation under the summed particle forces and torques.
 #pragma once
 

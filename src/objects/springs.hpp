@@ -1,6 +1,6 @@
-// A deformable object's spring network (seed 1 §4.3, §8.2): springs between particles that are
-// close at rest, with damping along each spring, breaking past a strain; and the normals that
-// follow the deformed surface.
+// A deformable object's spring network (Meteer 2011, §4.3, §8.2): springs between particles
+// that are close at rest, with damping along each spring, breaking past a strain; and the
+// normals that follow the deformed surface.
 #pragma once
 
 #include <cstdint>

@@ -15,8 +15,8 @@ namespace sph::sim {
 
 namespace {
 
-// Seed 2: threshold 7.065 with a support radius of 2/64.
-constexpr double kSeedSurfaceThresholdTimesH = 7.065 * 2.0 / 64.0;
+// The 2021 CUDA SPH tutorial: threshold 7.065 with a support radius of 2/64.
+constexpr double kTutorialSurfaceThresholdTimesH = 7.065 * 2.0 / 64.0;
 
 template <class Kernels>
 double latticeSum(const Kernels& kernels, double h, double spacing) {
@@ -66,12 +66,12 @@ double largestBlockSpeed(const Scene& scene) {
   return v;
 }
 
-// Seed 1 §8.1 for the interaction: the paper tuned its contact coefficients by hand; ours follow
-// from the fluid. The spring is as stiff as the fluid's CFL step can resolve at the centre of
-// the influence sphere, where the distance function is largest (e^β): ω = sqrt(k e^β / m) =
-// 1 / dt_CFL. The dashpot is half critical for that spring at its rim. A fluid particle's
-// acceleration is clamped at c0² / h, the pressure acceleration of a fully compressed
-// neighbourhood, far above what a calm flow sees.
+// Meteer 2011, §8.1 for the interaction: the paper tuned its contact coefficients by hand; ours
+// follow from the fluid. The spring is as stiff as the fluid's CFL step can resolve at the centre
+// of the influence sphere, where the distance function is largest (e^β):
+// ω = sqrt(k e^β / m) = 1 / dt_CFL. The dashpot is half critical for that spring at its rim. A
+// fluid particle's acceleration is clamped at c0² / h, the pressure acceleration of a fully
+// compressed neighbourhood, far above what a calm flow sees.
 void calibrateContact(const Scene& scene, Calibration& out) {
   const InteractionDesc& i = scene.interaction;
   const double cflDt = scene.time.cfl * out.supportRadius / out.soundSpeed;
@@ -168,8 +168,8 @@ Calibration calibrate(const Scene& scene) {
                                ? f.viscosity / f.restDensity
                                : f.viscosity * out.supportRadius * out.soundSpeed / 10.0;
 
-  out.surfaceThreshold =
-      f.surfaceThreshold ? *f.surfaceThreshold : kSeedSurfaceThresholdTimesH / out.supportRadius;
+  out.surfaceThreshold = f.surfaceThreshold ? *f.surfaceThreshold
+                                            : kTutorialSurfaceThresholdTimesH / out.supportRadius;
 
   if (!scene.objects.empty()) calibrateContact(scene, out);
 

@@ -1,4 +1,4 @@
-// Seed 1 §8.1, solved: every parameter derived from the scene's geometry and material.
+// Meteer 2011, §8.1, solved: every parameter derived from the scene's geometry and material.
 #pragma once
 
 #include "fluid/parameters.hpp"

@@ -1,7 +1,7 @@
-// Frame output that does not stall the simulation (seed 2): a download copies the fluid's
-// arrays on the GPU into a snapshot, in step order on the default stream, then from the
-// snapshot into pinned host memory on a stream of its own, so the next steps run while the
-// bytes cross the bus. Only take() waits.
+// Frame output that does not stall the simulation (the 2021 CUDA SPH tutorial): a download
+// copies the fluid's arrays on the GPU into a snapshot, in step order on the default stream,
+// then from the snapshot into pinned host memory on a stream of its own, so the next steps run
+// while the bytes cross the bus. Only take() waits.
 #pragma once
 
 #include <memory>

@@ -76,7 +76,7 @@ class FluidEngine {
   // from the last density pass's neighbours.
   virtual void measureSurface() = 0;
 
-  // The interaction with objects (seed 1 §7). A new publication of the objects' surface
+  // The interaction with objects (Meteer 2011, §7). A new publication of the objects' surface
   // particles; returns their largest speed.
   virtual float setObjectSurface(const ObjectSurface& surface,
                                  const interaction::InteractionParameters& params) = 0;

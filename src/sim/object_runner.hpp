@@ -1,4 +1,4 @@
-// Runs the built-in object engine beside the fluid (seed 1 figure 1): in its own thread by
+// Runs the built-in object engine beside the fluid (Meteer 2011, figure 1): in its own thread by
 // default, in lock-step — the fluid hands it each step's length and collects its publication
 // at the next step's interaction — so that runs stay byte-identical. Between the two, the
 // engine steps while the fluid builds its grid and computes densities and forces.

@@ -143,7 +143,7 @@ struct Simulation::Impl {
     return byId;
   }
 
-  // Seed 1 §7, steps 2-4: the engine's newest surface particles, collisions, contact forces.
+  // Meteer 2011, §7, steps 2-4: the engine's newest surface particles, collisions, contact forces.
   void interact() {
     if (!objects) return;
     objects->wait();
@@ -275,7 +275,7 @@ struct Simulation::Impl {
     return next;
   }
 
-  // Seed 1 §8.3: contacts stay resolved, and no object particle moves more than a quarter of
+  // Meteer 2011, §8.3: contacts stay resolved, and no object particle moves more than a quarter of
   // the fluid's radius in a step, so nothing tunnels.
   double objectTimeStep() const {
     // The stiffest contact is at the centre of the influence sphere, where φ = e^β.

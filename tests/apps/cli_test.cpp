@@ -1,4 +1,4 @@
-// The command-line contract (DESIGN.md): outputs, exit codes, and never overwriting a run.
+// The command-line contract (README.md): outputs, exit codes, and never overwriting a run.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>

@@ -18,7 +18,7 @@ TEST(DemContact, NoForceOutsideReach) {
 }
 
 TEST(DemContact, SpringPushesApartInProportionToOverlap) {
-  // Seed 1 eq. 13: k (reach - |r|) along r̂, scaled by the distance function.
+  // Meteer 2011, eq. 13: k (reach - |r|) along r̂, scaled by the distance function.
   const Vec3 f =
       demContactForce(kCoefficients, Vec3{0, 0.006f, 0}, Vec3{0, 0, 0}, 0.01f, 2.0f, true);
   EXPECT_NEAR(f.y, 200.0f * 2.0f * 0.004f, 1e-5f);
@@ -27,7 +27,7 @@ TEST(DemContact, SpringPushesApartInProportionToOverlap) {
 }
 
 TEST(DemContact, DampingFollowsRelativeVelocityAndShearItsTangentialPart) {
-  // Seed 1 eqs. 14-16 with r̂ = x: v = (1, 2, 0) → damping 0.5 v, shear 0.25 (0, 2, 0).
+  // Meteer 2011, eqs. 14-16 with r̂ = x: v = (1, 2, 0) → damping 0.5 v, shear 0.25 (0, 2, 0).
   const Vec3 f =
       demContactForce(kCoefficients, Vec3{0.01f, 0, 0}, Vec3{1, 2, 0}, 0.02f, 1.0f, true);
   EXPECT_NEAR(f.x, 200.0f * 0.01f + 0.5f * 1.0f, 1e-5f);

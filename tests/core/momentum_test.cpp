@@ -30,7 +30,8 @@ TEST(Momentum, PressureFormsAreAntisymmetric) {
                  pressureAccelerationSymmetric(m, tj, ti, gradW(-rij)));
   expectOpposite(pressureAccelerationPaper(m, pi, 1.0f / rhoi, pj, 1.0f / rhoj, gradW(rij)),
                  pressureAccelerationPaper(m, pj, 1.0f / rhoj, pi, 1.0f / rhoi, gradW(-rij)));
-  // The symmetric form is seed 2's p_i/ρ_i² + p_j/ρ_j²; the paper's is (p_i+p_j)/(2ρ_iρ_j).
+  // The symmetric form is the 2021 CUDA SPH tutorial's p_i/ρ_i² + p_j/ρ_j²; the paper's is
+  // (p_i+p_j)/(2ρ_iρ_j).
   const Vec3 g = gradW(rij);
   const Vec3 sym = pressureAccelerationSymmetric(m, ti, tj, g);
   EXPECT_NEAR(sym.x, -m * (pi / (rhoi * rhoi) + pj / (rhoj * rhoj)) * g.x, 1e-6f * std::abs(sym.x));

@@ -1,4 +1,4 @@
-// Seed 1 §9, the interaction's own test: a vessel completely filled with blood is squeezed on
+// Meteer 2011, §9, the interaction's own test: a vessel completely filled with blood is squeezed on
 // one side; the blood moves to the other side and none leaves the vessel unless it is torn.
 #include <gtest/gtest.h>
 
@@ -72,7 +72,7 @@ TEST_P(ArterySqueeze, BloodMovesToTheFreeEndAndNoneLeaks) {
 
 SPH_ON_EVERY_BACKEND(ArterySqueeze);
 
-// The exchange (seed 1 figure 1): the object engine at twice and at half the fluid's rate, in
+// The exchange (Meteer 2011, figure 1): the object engine at twice and at half the fluid's rate, in
 // its own thread; the squeeze stays stable and leak-free.
 class ArteryEngineRate : public ::testing::TestWithParam<double> {};
 

@@ -1,4 +1,4 @@
-// The free-surface flags (seed 1 eqs. 11-12), measured when a frame is taken: in a resting
+// The free-surface flags (Meteer 2011, eqs. 11-12), measured when a frame is taken: in a resting
 // tank the top layer is surface, the water below it and against the walls is not, and the
 // statistics count the flags the frame carries.
 #include <gtest/gtest.h>

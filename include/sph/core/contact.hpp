@@ -1,4 +1,4 @@
-// Contact between two particles by the discrete element method (seed 1 §7.4, eqs. 13-16,
+// Contact between two particles by the discrete element method (Meteer 2011, §7.4, eqs. 13-16,
 // Algorithm 3; Harada 2007): a linear spring against overlap, a dashpot on the relative
 // velocity and a shear term on its tangential part. Used between fluid and object particles
 // (the interaction) and between the particles of different objects (the object engine).
@@ -19,7 +19,7 @@ struct ContactCoefficients {
   float shear;    // k_shear, N·s/m
 };
 
-// Seed 1 §8.2, figure 7: the spring term is multiplied by a distance function that grows
+// Meteer 2011, §8.2, figure 7: the spring term is multiplied by a distance function that grows
 // exponentially as a fluid particle nears the object particle, so that a particle heading into
 // a hole between object particles is sent back before it gets through. The function is
 // φ(q) = exp(β (1 - q)) for q = |r| / R in [0, 1] (R: contact distance through the influence
@@ -54,15 +54,15 @@ inline DistanceFunctionTable DistanceFunctionTable::make(double exponent) {
   return table;
 }
 
-// Seed 1 eq. 16: the part of v perpendicular to the unit normal n.
+// Meteer 2011, eq. 16: the part of v perpendicular to the unit normal n.
 SPH_HD Vec3 tangentialPart(Vec3 v, Vec3 n) {
   return v - n * dot(v, n);
 }
 
-// Seed 1 eqs. 13-15 for particles a and b whose spheres (radii summing to `reach`) overlap.
+// Meteer 2011, eqs. 13-15 for particles a and b whose spheres (radii summing to `reach`) overlap.
 // `springScale` multiplies the spring term (the distance function, or 1); `damped` turns the
-// dashpot off where the object is cut (seed 1 §8.2, the cut-aware variant), so blood may leave
-// through a tear while an intact wall still damps it.
+// dashpot off where the object is cut (Meteer 2011, §8.2, the cut-aware variant), so blood may
+// leave through a tear while an intact wall still damps it.
 // Returns zero when the spheres do not touch or the particles coincide.
 SPH_HD Vec3 demContactForce(const ContactCoefficients& k, Vec3 offset, Vec3 relativeVelocity,
                             float reach, float springScale, bool damped) {

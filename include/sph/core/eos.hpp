@@ -1,4 +1,5 @@
-// Equations of state (seed 2) and the stiffness that gives a chosen speed of sound.
+// Equations of state (the 2021 CUDA SPH tutorial) and the stiffness that gives a chosen
+// speed of sound.
 #pragma once
 
 #include <cmath>
@@ -15,7 +16,7 @@ SPH_HD Real pressureFromDensity(EquationOfState eos, Real density, Real restDens
                                 bool clampNegative) {
   Real p;
   switch (eos) {
-    case EquationOfState::Linear:  // seed 1 eq. 5 with p0 = 0
+    case EquationOfState::Linear:  // Meteer 2011, eq. 5 with p0 = 0
       p = stiffness * (density - restDensity);
       break;
     case EquationOfState::Ratio:

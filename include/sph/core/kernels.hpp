@@ -3,7 +3,7 @@
 //   W(r²)                  density and colour field
 //   gradFactor(r)          ∇W(r) = gradFactor(r) · r⃗   (r⃗ = x_i - x_j), the pressure gradient
 //   laplacian(r)           ∇²W(r) for the Müller viscosity
-//   colourGradFactor(r)    ∇C of the colour field built from W (surface normal, seed 1 eq. 12)
+//   colourGradFactor(r)    ∇C of the colour field from W (surface normal, Meteer 2011, eq. 12)
 //   colourLaplacian(r)     ∇²C of the same field (surface tension curvature)
 // Coefficients are computed once on the host (`make`) and passed by value to the device.
 #pragma once
@@ -15,14 +15,14 @@ namespace sph {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Müller et al. 2003 (the seeds' default): poly6 for W, spiky gradient for pressure,
-// the viscosity kernel's Laplacian for viscosity.
+// Müller et al. 2003 (the default of both Meteer 2011 and the 2021 CUDA SPH tutorial): poly6
+// for W, spiky gradient for pressure, the viscosity kernel's Laplacian for viscosity.
 template <class Real>
 struct MullerKernels {
   Real h, h2;
   Real poly6;          // 315 / (64 π h⁹)
-  Real spikyGradient;  // -45 / (π h⁶); seed 1 eq. 8 writes the power as 3: a typo
-  Real viscosityLap;   // 45 / (π h⁶), seed 1 eq. 9
+  Real spikyGradient;  // -45 / (π h⁶); Meteer 2011, eq. 8, writes the power as 3: a typo
+  Real viscosityLap;   // 45 / (π h⁶), Meteer 2011, eq. 9
 
   static MullerKernels make(double h) {
     const double h3 = h * h * h, h6 = h3 * h3, h9 = h6 * h3;

@@ -16,13 +16,14 @@ SPH_HD float pressureOverDensitySquared(float pressure, float density) {
   return pressure / (density * density);
 }
 
-// Seed 2's symmetric form: -m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W, from the per-particle factors.
+// The 2021 CUDA SPH tutorial's symmetric form: -m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W, from the
+// per-particle factors.
 template <class S, class V>
 SPH_HD V pressureAccelerationSymmetric(S massJ, S pOverRho2I, S pOverRho2J, V gradW) {
   return gradW * (-massJ * (pOverRho2I + pOverRho2J));
 }
 
-// Seed 1 eq. 6 divided by ρ_i: -m_j (p_i + p_j) / (2 ρ_i ρ_j) ∇W.
+// Meteer 2011, eq. 6 divided by ρ_i: -m_j (p_i + p_j) / (2 ρ_i ρ_j) ∇W.
 template <class S, class V>
 SPH_HD V pressureAccelerationPaper(S massJ, S pressureI, S inverseDensityI, S pressureJ,
                                    S inverseDensityJ, V gradW) {
@@ -48,14 +49,15 @@ SPH_HD S wallPressure(S pressureI, S densityI, V gravity, V xbMinusXi, bool clam
   return clampNegative ? select(p < S(0), S(0), p) : p;
 }
 
-// Seed 1 eq. 7 divided by ρ_i (Müller 2003): μ m_j (v_j - v_i) / (ρ_i ρ_j) ∇²W.
+// Meteer 2011, eq. 7 divided by ρ_i (Müller 2003): μ m_j (v_j - v_i) / (ρ_i ρ_j) ∇²W.
 template <class S, class V>
 SPH_HD V mullerViscosityAcceleration(S dynamicViscosity, S massJ, S densityI, S densityJ, V vij,
                                      S laplacianW) {
   return vij * (-dynamicViscosity * massJ * laplacianW / (densityI * densityJ));
 }
 
-// Monaghan 1992 artificial viscosity (seed 2's form): acts only on approaching pairs.
+// Monaghan 1992 artificial viscosity (the 2021 CUDA SPH tutorial's form): acts only on
+// approaching pairs.
 //   a_i = m_j α h c0 (v_ij·r_ij) / (ρ̄_ij (r² + 0.01 h²)) ∇W
 template <class S, class V>
 SPH_HD V artificialViscosityAcceleration(S alpha, S soundSpeed, S h, S massJ, S densityI,

@@ -1,6 +1,6 @@
 // Loads of what a kernel only reads, in its neighbour loops: through the GPU's read-only data
-// cache (seed 1 §5 used texture fetches on the GTX 480; `__ldg` is their successor), plain
-// loads on the CPU. The arrays are reordered by cell, so neighbours share cache lines.
+// cache (Meteer 2011 used texture fetches on the GTX 480, §5; `__ldg` is their successor),
+// plain loads on the CPU. The arrays are reordered by cell, so neighbours share cache lines.
 #pragma once
 
 #include <cstdint>

@@ -27,7 +27,7 @@ inline double viscousTimeStep(double factor, double h, double kinematicViscosity
 }
 
 // A spring of stiffness k (scaled at most by `peakScale`) on a mass m oscillates at
-// ω = sqrt(k peakScale / m); an explicit step of 1/ω resolves it (seed 1 §8.3's contacts).
+// ω = sqrt(k peakScale / m); an explicit step of 1/ω resolves it (contacts: Meteer 2011, §8.3).
 inline double springTimeStep(double mass, double stiffness, double peakScale) {
   return stiffness > 0.0 ? std::sqrt(mass / (stiffness * peakScale)) : HUGE_VAL;
 }

@@ -1,5 +1,5 @@
 // Small vector types shared by host and device code. Vec4 pads a Vec3 to 16 bytes so
-// positions and velocities load as one aligned word (seed 1 §2.4).
+// positions and velocities load as one aligned word (Meteer 2011, §2.4).
 #pragma once
 
 #include <cmath>
