@@ -31,10 +31,9 @@ struct FactorSum {
 };
 
 // β_i (core/dfsph.hpp), into solverFactor.
-template <class Kernels>
 struct FactorPass {
+  static constexpr bool kFirstOfStep = true;
   static constexpr bool kWalls = true;
-  Kernels kernels;
   float volume;    // of a fluid particle, m/ρ0
   float smallest;  // dfsphSmallestFactorSum
   float* factor;
@@ -44,15 +43,15 @@ struct FactorPass {
   SPH_HD_INLINE FactorSum<S, V> start(std::size_t) const {
     return {};
   }
-  template <class S, class V, class M, class C>
-  SPH_HD_INLINE void addFluid(FactorSum<S, V>& sum, const Pair<S, V, M>& pair, const C&) const {
-    const V g = pair.rij * (S(volume) * pair.where(kernels.gradFactor(pair.r)));
+  template <class S, class V, class C>
+  SPH_HD_INLINE void addFluid(FactorSum<S, V>& sum, const V& gradW, const C&) const {
+    const V g = gradW * S(volume);
     sum.gradient += g;
     sum.squares += dot(g, g);
   }
-  template <class S, class V, class M>
-  SPH_HD_INLINE void addWall(FactorSum<S, V>& sum, const Pair<S, V, M>& pair, S volumeB) const {
-    const V g = pair.rij * (volumeB * pair.where(kernels.gradFactor(pair.r)));
+  template <class S, class V>
+  SPH_HD_INLINE void addWall(FactorSum<S, V>& sum, const V& gradW, S volumeB) const {
+    const V g = gradW * volumeB;
     sum.gradient += g;
     sum.wall += g;
   }
@@ -73,11 +72,10 @@ struct RateSum {
 // From the velocities being corrected, each particle's predicted density error e_i ≥ 0 (a
 // particle is never pulled towards its neighbours: the free surface reads low) and the K_i that
 // would undo it alone (one Jacobi step, Bender & Koschier 2017).
-template <class Kernels>
 struct RatePass {
+  static constexpr bool kFirstOfStep = false;
   // Walls do not move within a step: their share is ρ0 v_i·G_w, kept by the factor pass.
   static constexpr bool kWalls = false;
-  Kernels kernels;
   SolverTarget target;
   float mass, restDensity, dt;
   std::uint32_t minNeighbours;  // SolverSettings
@@ -97,11 +95,9 @@ struct RatePass {
   SPH_HD_INLINE RateSum<S, V> start(std::size_t i) const {
     return RateSum<S, V>{spread<V>(velocityOf(i))};
   }
-  template <class S, class V, class M, class C>
-  SPH_HD_INLINE void addFluid(RateSum<S, V>& sum, const Pair<S, V, M>& pair,
-                              const C& columns) const {
+  template <class S, class V, class C>
+  SPH_HD_INLINE void addFluid(RateSum<S, V>& sum, const V& gradW, const C& columns) const {
     const V vj{columns[SolverRecord::kVX], columns[SolverRecord::kVY], columns[SolverRecord::kVZ]};
-    const V gradW = pair.rij * pair.where(kernels.gradFactor(pair.r));
     sum.rate += densityRateTerm(S(mass), sum.vi - vj, gradW);
   }
   template <class S, class V>
@@ -121,11 +117,11 @@ struct RatePass {
 
 // The factor and the first rate pass of a step in one walk over the neighbours: the rate pass
 // reads only particle i's own factor, which the factor pass has just summed.
-template <class Kernels>
 struct FactorAndRatePass {
+  static constexpr bool kFirstOfStep = true;
   static constexpr bool kWalls = true;
-  FactorPass<Kernels> factor;
-  RatePass<Kernels> rate;
+  FactorPass factor;
+  RatePass rate;
 
   template <class S, class V>
   struct Sum {
@@ -136,14 +132,14 @@ struct FactorAndRatePass {
   SPH_HD_INLINE Sum<S, V> start(std::size_t i) const {
     return {factor.template start<S, V>(i), rate.template start<S, V>(i)};
   }
-  template <class S, class V, class M, class C>
-  SPH_HD_INLINE void addFluid(Sum<S, V>& sum, const Pair<S, V, M>& pair, const C& columns) const {
-    factor.addFluid(sum.factor, pair, columns);
-    rate.addFluid(sum.rate, pair, columns);
+  template <class S, class V, class C>
+  SPH_HD_INLINE void addFluid(Sum<S, V>& sum, const V& gradW, const C& columns) const {
+    factor.addFluid(sum.factor, gradW, columns);
+    rate.addFluid(sum.rate, gradW, columns);
   }
-  template <class S, class V, class M>
-  SPH_HD_INLINE void addWall(Sum<S, V>& sum, const Pair<S, V, M>& pair, S volumeB) const {
-    factor.addWall(sum.factor, pair, volumeB);
+  template <class S, class V>
+  SPH_HD_INLINE void addWall(Sum<S, V>& sum, const V& gradW, S volumeB) const {
+    factor.addWall(sum.factor, gradW, volumeB);
   }
   template <class S, class V>
   SPH_HD_INLINE void finish(std::size_t i, const Sum<S, V>& sum) const {
@@ -160,11 +156,10 @@ struct VelocitySum {
 
 // The velocity correction of the K's just computed: Δv_i = Δt Σ_j -m_j (K_i + K_j) ∇W_ij, a
 // wall particle mirroring K_i. Adds K_i to the solve's total.
-template <class Kernels>
 struct VelocityPass {
+  static constexpr bool kFirstOfStep = false;
   // The walls mirror K_i: their share is -2 ρ0 K_i G_w, from the factor pass.
   static constexpr bool kWalls = false;
-  Kernels kernels;
   float mass, restDensity, dt;
   const Vec4* wallGradient;
   const float* stiffnessRecords;
@@ -174,10 +169,8 @@ struct VelocityPass {
   SPH_HD_INLINE VelocitySum<S, V> start(std::size_t i) const {
     return VelocitySum<S, V>{S(stiffnessRecords[kRecordFields * i + SolverRecord::kK])};
   }
-  template <class S, class V, class M, class C>
-  SPH_HD_INLINE void addFluid(VelocitySum<S, V>& sum, const Pair<S, V, M>& pair,
-                              const C& columns) const {
-    const V gradW = pair.rij * pair.where(kernels.gradFactor(pair.r));
+  template <class S, class V, class C>
+  SPH_HD_INLINE void addFluid(VelocitySum<S, V>& sum, const V& gradW, const C& columns) const {
     sum.dv += pressureAccelerationSymmetric(S(mass), sum.ki, columns[SolverRecord::kK], gradW);
   }
   template <class S, class V>

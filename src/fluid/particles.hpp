@@ -39,7 +39,7 @@ struct FluidParticles {
   Buffer<std::uint32_t> neighbors;      // n × neighborStride
   Buffer<std::uint32_t> neighborCount;  // n
   // computed by computeForces (n)
-  Buffer<Vec4> acceleration;  // xyz; w = |∇c|, the colour-field gradient (seed 1 eq. 12)
+  Buffer<Vec4> acceleration;  // xyz; w = |∇c|, the colour-field gradient (Meteer 2011, eq. 12)
   // set by the embedding application, indexed by particle id; empty when unused
   Buffer<Vec4> externalById;  // xyz: external acceleration, m/s²
   // scratch of buildGrid (n)
@@ -64,8 +64,11 @@ struct FluidParticles {
   Buffer<Vec4> solverWallGradient;    // xyz: G_w = Σ_b ψ_b ∇W_ib, per step
   Buffer<float> solverTotal;          // Σ K_i applied this solve
   Buffer<std::uint64_t> solverError;  // the last iteration's e_i, fixed point (kErrorScale)
+  // ∇W_ij = g_ij (x_i - x_j) of each listed neighbour (n × neighborStride, beside neighbors),
+  // kept by the step's first solver pass for the others (solver_walk.hpp)
+  Buffer<float> pairGradient;
   // Kept across steps, reordered with the particles by buildGrid: x, the density solve's
-  // total K. Empty unless the solver runs.
+  // total K; y, the divergence solve's total K times its Δt. Empty unless the solver runs.
   Buffer<Vec4> warmStart;
 };
 

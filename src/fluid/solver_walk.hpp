@@ -2,11 +2,19 @@
 // lists of the density pass (the cells for a particle with too many), reading each neighbour
 // from 8-float records (particles.hpp), one neighbour at a time (the GPU, and the CPU's
 // reference) or a SIMD batch at a time (the CPU). A pass is a struct with
+//   kFirstOfStep                            true: computes the listed pairs' kernel gradients
+//                                           and keeps them; false: reads them back
+//   kWalls                                  whether it walks the walls
 //   Sum start<S, V>(i)                      what particle i sums, zeroed
-//   addFluid(sum, pair, columns)            a fluid neighbour: columns[c] is float c of its record
-//   addWall(sum, pair, volume)              a wall particle of volume ψ_b, if kWalls
+//   addFluid(sum, ∇W_ij, columns)           a fluid neighbour: columns[c] is float c of its record
+//   addWall(sum, ∇W_ib, volume)             a wall particle of volume ψ_b, if kWalls
 //   finish(i, sum)                          writes particle i's result
 // with S, V = float, Vec3 or FloatBatch, BatchVec3: the pass is written once for both walks.
+//
+// Positions do not change within a step, and neither does ∇W_ij = g_ij (x_i - x_j): the step's
+// first pass keeps g_ij beside each listed neighbour (pairGradient), and every later pass reads
+// it back instead of a square root and a division a pair, where the lists are small enough for
+// that to pay (dfsph_solve.hpp).
 #pragma once
 
 #include <cstdint>
@@ -19,13 +27,20 @@
 
 namespace sph::fluid {
 
-template <class B, class Pass>
+// ∇W for a pair the lists do not hold a gradient for.
+template <class S, class V, class M, class Kernels>
+SPH_HD_INLINE V pairGradient(const Kernels& kernels, const Pair<S, V, M>& pair) {
+  return pair.rij * pair.where(kernels.gradFactor(pair.r));
+}
+
+template <class B, class Kernels, class Pass>
 void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
-                const BoundaryParticles<B>& boundary, const float* records, float h, Pass pass) {
+                const BoundaryParticles<B>& boundary, const float* records, Kernels kernels,
+                Pass pass, float* keptGradients) {
   const NeighborLists lists = neighborLists(fluid, grid);
   const WallCells walls = wallCells(boundary);
   const Vec4* wall = boundary.position.data();  // w: volume ψ_b
-  const float h2 = h * h;
+  const float h2 = kernels.h2;
   B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const float* ri = records + kRecordFields * i;
@@ -34,23 +49,49 @@ void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
         // there.
         (void)walls;
         (void)wall;
+        (void)keptGradients;
         auto sum = pass.template start<float, Vec3>(i);
-        forEachListedNeighbor(lists, i, xi, [&](std::uint32_t j) {
+        // Neighbour j's record and x_i - x_j.
+        const auto read = [&](std::uint32_t j, float(&columns)[kRecordFields]) {
           const float* rj = records + kRecordFields * j;
-          float columns[kRecordFields];
           for (std::uint32_t c = 0; c < kRecordFields; ++c) columns[c] = readOnly(rj + c);
-          const Vec3 rij = xi - Vec3{columns[0], columns[1], columns[2]};
-          const float r2 = lengthSquared(rij);
-          if (r2 >= h2) return;
-          pass.addFluid(sum, makePair(rij, r2, true, h2), columns);
-        });
+          return xi - Vec3{columns[0], columns[1], columns[2]};
+        };
+        const std::uint32_t count = lists.count[i];
+        if (count != kNeighborOverflow) {
+          const std::uint32_t* list = lists.index + i * lists.stride;
+          float* kept = keptGradients != nullptr ? keptGradients + i * lists.stride : nullptr;
+          for (std::uint32_t k = 0; k < count; ++k) {
+            float columns[kRecordFields];
+            const Vec3 rij = read(readOnly(list + k), columns);
+            float g;
+            if (Pass::kFirstOfStep || kept == nullptr) {
+              const float r2 = lengthSquared(rij);
+              const auto pair = makePair(rij, r2, r2 < h2, h2);
+              g = pair.where(kernels.gradFactor(pair.r));
+              if (Pass::kFirstOfStep && kept != nullptr) kept[k] = g;
+            } else {
+              g = kept[k];
+            }
+            pass.addFluid(sum, rij * g, columns);
+          }
+        } else {
+          forEachNeighbor(lists.spec, lists.cellStart, xi, [&](std::uint32_t j) {
+            if (j == i) return;
+            float columns[kRecordFields];
+            const Vec3 rij = read(j, columns);
+            const float r2 = lengthSquared(rij);
+            if (r2 >= h2) return;
+            pass.addFluid(sum, pairGradient(kernels, makePair(rij, r2, true, h2)), columns);
+          });
+        }
         if constexpr (Pass::kWalls) {
           forEachWallNeighbor(walls, xi, [&](std::uint32_t b) {
             const Vec4 xb = readOnly(wall + b);
             const Vec3 rib = xi - xyz(xb);
             const float r2 = lengthSquared(rib);
             if (r2 >= h2 || r2 <= 0.0f) return;
-            pass.addWall(sum, makePair(rib, r2, true, h2), xb.w);
+            pass.addWall(sum, pairGradient(kernels, makePair(rib, r2, true, h2)), xb.w);
           });
         }
         pass.finish(i, sum);
@@ -61,44 +102,58 @@ void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
 
 namespace detail {
 
-template <class Pass>
+template <class Kernels, class Pass>
 void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>& grid,
-                       const BoundaryParticles<CpuBackend>& boundary, const float* records, float h,
-                       Pass pass) {
+                       const BoundaryParticles<CpuBackend>& boundary, const float* records,
+                       Kernels kernels, Pass pass, float* keptGradients) {
   const NeighborLists lists = neighborLists(fluid, grid);
   const WallCells walls = wallCells(boundary);
   const float* wx = boundary.batchX.data();
   const float* wy = boundary.batchY.data();
   const float* wz = boundary.batchZ.data();
   const float* wv = boundary.batchVolume.data();
-  const float h2 = h * h;
+  const float h2 = kernels.h2;
   const FloatBatch h2Batch(h2), zero(0.0f);
   CpuBackend::forEach(fluid.count, [=](std::size_t i) {
     const float* ri = records + kRecordFields * i;
     const Vec3 xs{ri[0], ri[1], ri[2]};
     const BatchVec3 xi = broadcast(xs);
     auto sum = pass.template start<FloatBatch, BatchVec3>(i);
-    const auto add = [&](const FloatBatch(&columns)[kRecordFields],
-                         const FloatBatch::mask_type& candidates) SPH_BATCH_INLINE_LAMBDA {
+    // A batch of the cells' particles: only those within h count.
+    const auto search = [&](const FloatBatch(&columns)[kRecordFields],
+                            const FloatBatch::mask_type& candidates) SPH_BATCH_INLINE_LAMBDA {
       const BatchVec3 rij = xi - BatchVec3{columns[0], columns[1], columns[2]};
       const FloatBatch r2 = dot(rij, rij);
       const auto near = candidates && r2 < h2Batch;
       if (stdx::none_of(near)) return;
-      pass.addFluid(sum, makePair(rij, r2, near, h2), columns);
+      pass.addFluid(sum, pairGradient(kernels, makePair(rij, r2, near, h2)), columns);
     };
+    const std::uint32_t* list = lists.index + i * lists.stride;
+    float* kept = keptGradients != nullptr ? keptGradients + i * lists.stride : nullptr;
     forEachNeighborBatch(
         lists, i, xs,
         [&](const std::uint32_t* at) SPH_BATCH_INLINE_LAMBDA {
           FloatBatch columns[kRecordFields];
           gatherRecords(records, at, columns);
-          add(columns, FloatBatch::mask_type(true));
+          const BatchVec3 rij = xi - BatchVec3{columns[0], columns[1], columns[2]};
+          FloatBatch g;
+          if (Pass::kFirstOfStep || kept == nullptr) {
+            const FloatBatch r2 = dot(rij, rij);
+            const auto pair = makePair(rij, r2, r2 < h2Batch, h2);
+            g = pair.where(kernels.gradFactor(pair.r));
+            if (Pass::kFirstOfStep && kept != nullptr)
+              g.copy_to(kept + (at - list), stdx::element_aligned);
+          } else {
+            g = loadBatch(kept + (at - list), 0);
+          }
+          pass.addFluid(sum, rij * g, columns);
         },
         [&](std::uint32_t j, const FloatBatch::mask_type& candidates) {
           std::uint32_t at[kBatch];
           for (std::uint32_t k = 0; k < kBatch; ++k) at[k] = j + k;  // the padding is a record
           FloatBatch columns[kRecordFields];
           gatherRecords(records, at, columns);
-          add(columns, candidates);
+          search(columns, candidates);
         });
     if constexpr (Pass::kWalls) {
       forEachWallBatch(walls, xs, [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
@@ -106,7 +161,7 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
         const FloatBatch r2 = dot(rib, rib);
         const auto near = candidates && r2 < h2Batch && r2 > zero;
         if (stdx::none_of(near)) return;
-        pass.addWall(sum, makePair(rib, r2, near, h2), loadBatch(wv, b));
+        pass.addWall(sum, pairGradient(kernels, makePair(rib, r2, near, h2)), loadBatch(wv, b));
       });
     }
     pass.finish(i, sum);
@@ -117,20 +172,22 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
 
 #endif  // !__CUDACC__
 
-// The pass over every particle, on the walk the engine chose.
-template <class B, class Pass>
+// The pass over every particle, on the walk the engine chose; keptGradients: the listed pairs'
+// g_ij (n × neighborStride), written by a first pass of the step, read by the others; null:
+// every pass computes them.
+template <class B, class Kernels, class Pass>
 void runSolverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
-                   const BoundaryParticles<B>& boundary, const float* records, float h,
-                   [[maybe_unused]] NeighborWalk walk, const Pass& pass) {
+                   const BoundaryParticles<B>& boundary, const float* records, Kernels kernels,
+                   [[maybe_unused]] NeighborWalk walk, const Pass& pass, float* keptGradients) {
 #if !defined(__CUDACC__)
   if constexpr (B::kBatches) {
     if (walk == NeighborWalk::Batched) {
-      detail::solverPassBatched(fluid, grid, boundary, records, h, pass);
+      detail::solverPassBatched(fluid, grid, boundary, records, kernels, pass, keptGradients);
       return;
     }
   }
 #endif
-  solverPass(fluid, grid, boundary, records, h, pass);
+  solverPass(fluid, grid, boundary, records, kernels, pass, keptGradients);
 }
 
 }  // namespace sph::fluid
