@@ -62,6 +62,27 @@ TEST(LiveParameters, StiffnessCarriesTheSpeedOfSoundAndTheTimeStep) {
   EXPECT_NEAR(sim.lastDt(), 0.5 * dt, 0.05 * dt);
 }
 
+// The incompressible solver reads gravity and viscosity each step as the weakly compressible
+// one does; the equation of state's stiffness, which it does not use, leaves its step alone.
+TEST(LiveParameters, UnderDfsphGravityTakesEffectAndStiffnessLeavesTheStepAlone) {
+  Scene scene = fallingBlock();
+  scene.fluid.solver = FluidSolver::Dfsph;
+  Simulation sim(scene);
+  sim.advanceTo(0.05);
+  const double falling = meanVerticalVelocity(sim);
+  EXPECT_NEAR(falling, -9.81 * 0.05, 0.02);
+  LiveParameters values = sim.liveParameters();
+  values.gravity = {0, 0, 0};
+  values.stiffness *= 4.0;
+  sim.setLiveParameters(values);
+  sim.step();
+  const double dt = sim.lastDt();
+  sim.step();
+  EXPECT_NEAR(sim.lastDt(), dt, 0.05 * dt);
+  sim.advanceTo(0.1);
+  EXPECT_NEAR(meanVerticalVelocity(sim), falling, 0.01);
+}
+
 TEST(LiveParameters, AValueOutOfRangeNamesTheKeyAndChangesNothing) {
   Simulation sim(fallingBlock());
   LiveParameters values = sim.liveParameters();
