@@ -61,6 +61,9 @@ void printCalibration(std::FILE* out, const Simulation& sim) {
   if (s.objects.empty()) return;
   std::fprintf(out, "  objects              %zu, %llu particles\n", s.objects.size(),
                static_cast<unsigned long long>(c.objectParticles));
+  std::fprintf(out, "  coupling             %s\n",
+               c.objectsAsBoundary ? "boundary particles of the pressure solve (Akinci et al. 2012)"
+                                   : "contact forces (Meteer 2011, eqs. 13-16)");
   std::fprintf(out, "  contact k_spring     %.6g N/m (%s)\n", c.contactStiffness,
                origin(c.contactStiffnessFromScene));
   std::fprintf(out, "  contact k_damping    %.6g N s/m (%s)\n", c.contactDamping,
@@ -91,6 +94,7 @@ nlohmann::json calibrationJson(const Calibration& c) {
           {"contact_damping", c.contactDamping},
           {"contact_shear", c.contactShear},
           {"max_acceleration", c.maxAcceleration},
+          {"objects_as_boundary", c.objectsAsBoundary},
           {"fluid_particles", c.fluidParticles},
           {"object_particles", c.objectParticles},
           {"boundary_particles", c.boundaryParticles}};

@@ -58,6 +58,11 @@ struct DfsphDesc {
   int minIterations = 1;
   int maxIterations = 100;
   bool warmStart = true;  // each solve starts from the last step's pressure
+  // Either solve can be left out to see what the other does: the divergence solve alone keeps
+  // a velocity field from compressing but lets density errors drift; the density solve alone
+  // is the constant-density solver of the papers.
+  bool divergenceSolve = true;
+  bool densitySolve = true;
   // The step under acceleration: Δt ≤ force_factor √(h / a_max). The solve predicts the
   // density linearly over the step; past about 0.1 the prediction fails near walls.
   double forceFactor = 0.1;
@@ -137,15 +142,25 @@ struct KeyframeDesc {
   Vec3d rotation{0, 0, 0};
 };
 
+// How a deformable's springs are integrated: as explicit forces (Hooke plus a dashpot, substeps
+// as short as the stiffest spring needs), or as XPBD distance constraints of compliance 1/k
+// (Macklin et al. 2016, 2019), a fixed number of substeps whatever the stiffness.
+enum class DeformableModel { Springs, Xpbd };
+
 // A deformable object: its particles are joined by springs to every particle within
 // `springReach` × spacing at rest.
 struct DeformableDesc {
-  double stiffness = 0.0;       // N/m per spring; 0: derived (sim/calibration)
+  double stiffness = 0.0;       // N/m per spring; 0: derived (object engine)
   double damping = 0.0;         // N·s/m along each spring; 0: derived (critical over a spring)
   double breakingStrain = 0.0;  // a spring breaks past |l - l0| / l0; 0: never
   double springReach = 1.5;     // × the object's spacing
   std::vector<AxisBox> pinned;  // particles inside these boxes are fixed
   std::vector<AxisBox> cuts;    // springs that pass through these start broken (a slit)
+  DeformableModel model = DeformableModel::Springs;
+  int substeps = 8;  // xpbd: substeps per engine step, each one constraint iteration
+  // xpbd: N/m of a bending constraint on each nearly straight line of three nearest neighbours
+  // (the middle's distance from the three's centroid, Kelager et al. 2010); 0: none.
+  double bendingStiffness = 0.0;
 };
 
 struct ObjectDesc {
@@ -160,8 +175,17 @@ struct ObjectDesc {
   std::vector<KeyframeDesc> keyframes;
 };
 
+// How the fluid and the objects push each other. Contact: Meteer 2011's contact forces through
+// influence spheres (eqs. 13-16), a spring and dampers whose stiffness bounds the time step.
+// Boundary: the objects' surface particles count in the fluid's density and in the
+// incompressible solver's pressure as boundary particles (Akinci et al. 2012), and take the
+// reactions of that pressure; needs fluid.solver "dfsph" (docs/solvers.md says what it does
+// well and what not yet).
+enum class ObjectCoupling { Contact, Boundary };
+
 // Fluid–object contact (Meteer 2011, §7.4, §8.2, §8.3). Unset values are derived by calibration.
 struct InteractionDesc {
+  ObjectCoupling coupling = ObjectCoupling::Contact;
   double influenceRatio = 1.5;            // influence sphere radius / object particle radius
   double distanceExponent = 4.0;          // β of the distance function exp(β (1 - q))
   std::optional<double> stiffness;        // k_spring, N/m

@@ -42,6 +42,9 @@ struct Calibration {
   bool contactDampingFromScene = false;
   bool contactShearFromScene = false;
   bool maxAccelerationFromScene = false;
+  // interaction.coupling: the objects are boundary particles of the fluid's pressure solve
+  // (Akinci et al. 2012) rather than contact partners.
+  bool objectsAsBoundary = false;
   std::uint64_t fluidParticles = 0;
   std::uint64_t objectParticles = 0;
   std::uint64_t boundaryParticles = 0;

@@ -163,7 +163,7 @@ SPH_BATCH_INLINE void forEachNeighborBatch(const NeighborLists& lists, std::size
 // leaving out lanes past the row.
 template <class Visit>
 SPH_BATCH_INLINE void forEachWallBatch(const WallCells& walls, Vec3 x, Visit&& visit) {
-  if (walls.cellStart == nullptr) return;
+  if (walls.cellStart == nullptr || !nearGrid(walls.spec, x)) return;
   const FloatBatch lane = laneNumbers();
   forEachNeighborRange(walls.spec, walls.cellStart, x, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t b = begin; b < end; b += kBatch) visit(b, lane < FloatBatch(float(end - b)));

@@ -1,5 +1,6 @@
-// Stage: density with pressure in one pass (Meteer 2011, Algorithm 1). Reads position and the
-// walls. Writes density, pressure, pressureState and the neighbour lists.
+// Stage: density with pressure in one pass (Meteer 2011, Algorithm 1). Reads position, the
+// walls and the objects taking part as boundary particles (none: objects.count 0). Writes
+// density, pressure, pressureState and the neighbour lists.
 #pragma once
 
 #include "fluid/density_pressure_batched.hpp"
@@ -15,13 +16,15 @@ namespace detail {
 
 template <class B, class Kernels>
 void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
-                 const BoundaryParticles<B>& boundary, const FluidParameters& params,
-                 Kernels kernels) {
+                 const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
+                 const FluidParameters& params, Kernels kernels) {
   const GridSpec spec = grid.spec;
   const std::uint32_t* cellStart = grid.cellStart.data();
   const WallCells walls = wallCells(boundary);
+  const WallCells objectCells = wallCells(objects);
   const Vec4* position = fluid.position.data();
   const Vec4* wall = boundary.position.data();
+  const Vec4* object = objects.position.data();
   float* density = fluid.density.data();
   float* pressure = fluid.pressure.data();
   Vec4* state = fluid.pressureState.data();
@@ -49,6 +52,10 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
           const Vec4 xb = readOnly(wall + b);
           wallSum += xb.w * kernels.W(lengthSquared(xi - xyz(xb)));
         });
+        forEachWallNeighbor(objectCells, xi, [&](std::uint32_t k) {
+          const Vec4 xk = readOnly(object + k);
+          wallSum += xk.w * kernels.W(lengthSquared(xi - xyz(xk)));
+        });
         const PressureState s = pressureStateFromSums(sum, wallSum, p);
         density[i] = s.density;
         pressure[i] = s.pressure;
@@ -60,18 +67,19 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
 
 template <class B>
 void computeDensityAndPressure(FluidParticles<B>& fluid, const Grid<B>& grid,
-                               const BoundaryParticles<B>& boundary, const FluidParameters& params,
+                               const BoundaryParticles<B>& boundary,
+                               const BoundaryParticles<B>& objects, const FluidParameters& params,
                                [[maybe_unused]] NeighborWalk walk) {
   withKernels(params, [&](auto kernels) {
 #if !defined(__CUDACC__)
     if constexpr (B::kBatches) {
       if (walk == NeighborWalk::Batched) {
-        detail::densityPassBatched(fluid, grid, boundary, params, kernels);
+        detail::densityPassBatched(fluid, grid, boundary, objects, params, kernels);
         return;
       }
     }
 #endif
-    detail::densityPass<B>(fluid, grid, boundary, params, kernels);
+    detail::densityPass<B>(fluid, grid, boundary, objects, params, kernels);
   });
 }
 

@@ -16,7 +16,8 @@ namespace sph::fluid::detail {
 template <class Kernels>
 void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>& grid,
                         const BoundaryParticles<CpuBackend>& boundary,
-                        const FluidParameters& params, Kernels kernels) {
+                        const BoundaryParticles<CpuBackend>& objects, const FluidParameters& params,
+                        Kernels kernels) {
   const std::size_t n = fluid.count;
   // Far away: the padding never passes a distance test.
   padArrays(n, 1e30f, {&fluid.batchX, &fluid.batchY, &fluid.batchZ});
@@ -40,6 +41,11 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
   const float* wy = boundary.batchY.data();
   const float* wz = boundary.batchZ.data();
   const float* wv = boundary.batchVolume.data();
+  const WallCells objectCells = wallCells(objects);
+  const float* ox = objects.batchX.data();
+  const float* oy = objects.batchY.data();
+  const float* oz = objects.batchZ.data();
+  const float* ov = objects.batchVolume.data();
   float* density = fluid.density.data();
   float* pressure = fluid.pressure.data();
   Vec4* state = fluid.pressureState.data();
@@ -99,6 +105,12 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
       const FloatBatch r2 = dot(rib, rib);
       wallSum += loadBatch(wv, b) * kernelWhere(kernels, r2, candidates && r2 < h2);
     });
+    forEachWallBatch(
+        objectCells, xs, [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
+          const BatchVec3 rib = xi - loadBatch(ox, oy, oz, b);
+          const FloatBatch r2 = dot(rib, rib);
+          wallSum += loadBatch(ov, b) * kernelWhere(kernels, r2, candidates && r2 < h2);
+        });
     const PressureState s = pressureStateFromSums(sumLanes(sum), sumLanes(wallSum), p);
     density[i] = s.density;
     pressure[i] = s.pressure;

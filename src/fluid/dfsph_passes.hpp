@@ -23,11 +23,16 @@ struct SolverRecord {
 // count, so the iterations a solve takes, and with them the result, are too.
 constexpr double kErrorScale = 4294967296.0;  // 2³²
 
+// The density, as a share of ρ0, that marks a full neighbourhood whatever its walls: a
+// particle on the free surface reads well below it.
+constexpr float kBulkDensity = 0.95f;
+
 template <class S, class V>
 struct FactorSum {
   V gradient{S(0.0f), S(0.0f), S(0.0f)};  // Σ V_j ∇W_ij, walls included
-  V wall{S(0.0f), S(0.0f), S(0.0f)};      // Σ ψ_b ∇W_ib
+  V wall{S(0.0f), S(0.0f), S(0.0f)};      // Σ ψ_b ∇W_ib, the objects' particles included
   S squares{0.0f};                        // Σ |V_j ∇W_ij|², fluid only
+  S boundaryFlow{0.0f};                   // Σ ψ_b v_b·∇W_ib: the objects' motion
 };
 
 // β_i (core/dfsph.hpp), into solverFactor.
@@ -37,7 +42,9 @@ struct FactorPass {
   float volume;    // of a fluid particle, m/ρ0
   float smallest;  // dfsphSmallestFactorSum
   float* factor;
-  Vec4* wallGradient;  // G_w = Σ_b ψ_b ∇W_ib, for the passes after this one
+  // xyz: G_w = Σ_b ψ_b ∇W_ib, w: Σ_b ψ_b v_b·∇W_ib, for the passes after this one: the
+  // boundary particles do not move within a step.
+  Vec4* wallGradient;
 
   template <class S, class V>
   SPH_HD_INLINE FactorSum<S, V> start(std::size_t) const {
@@ -56,10 +63,16 @@ struct FactorPass {
     sum.wall += g;
   }
   template <class S, class V>
+  SPH_HD_INLINE void addMovingWall(FactorSum<S, V>& sum, const V& gradW, S volumeB,
+                                   const V& velocityB) const {
+    addWall(sum, gradW, volumeB);
+    sum.boundaryFlow += volumeB * dot(velocityB, gradW);
+  }
+  template <class S, class V>
   SPH_HD_INLINE void finish(std::size_t i, const FactorSum<S, V>& sum) const {
     const Vec3 wall = sumLanes(sum.wall);
     factor[i] = dfsphFactor(sumLanes(sum.gradient), wall, sumLanes(sum.squares), smallest);
-    wallGradient[i] = makeVec4(wall);
+    wallGradient[i] = makeVec4(wall, sumLanes(sum.boundaryFlow));
   }
 };
 
@@ -74,7 +87,8 @@ struct RateSum {
 // would undo it alone (one Jacobi step, Bender & Koschier 2017).
 struct RatePass {
   static constexpr bool kFirstOfStep = false;
-  // Walls do not move within a step: their share is ρ0 v_i·G_w, kept by the factor pass.
+  // Boundary particles do not move within a step: their share is ρ0 (v_i·G_w - Σ ψ_b v_b·∇W_ib),
+  // kept by the factor pass.
   static constexpr bool kWalls = false;
   SolverTarget target;
   float mass, restDensity, dt;
@@ -87,6 +101,11 @@ struct RatePass {
   float* stiffnessRecords;
   std::uint64_t* error;
 
+  // A particle the divergence solve corrects: one with a full neighbourhood, of fluid or of
+  // fluid and walls (a particle against a wall has half the fluid neighbours, and its density).
+  SPH_HD_INLINE bool inBulk(std::size_t i) const {
+    return neighborCount[i] >= minNeighbours || density[i] >= kBulkDensity * restDensity;
+  }
   SPH_HD_INLINE Vec3 velocityOf(std::size_t i) const {
     const float* r = velocityRecords + kRecordFields * i;
     return Vec3{r[SolverRecord::kVX], r[SolverRecord::kVY], r[SolverRecord::kVZ]};
@@ -102,10 +121,12 @@ struct RatePass {
   }
   template <class S, class V>
   SPH_HD_INLINE void finish(std::size_t i, const RateSum<S, V>& sum) const {
-    const float rate = sumLanes(sum.rate) + restDensity * dot(velocityOf(i), xyz(wallGradient[i]));
+    const Vec4 boundary = wallGradient[i];
+    const float rate =
+        sumLanes(sum.rate) + restDensity * (dot(velocityOf(i), xyz(boundary)) - boundary.w);
     const float e = target == SolverTarget::RestDensity
                         ? (density[i] + dt * rate) / restDensity - 1.0f
-                        : (neighborCount[i] >= minNeighbours ? dt * rate / restDensity : 0.0f);
+                        : (inBulk(i) ? dt * rate / restDensity : 0.0f);
     const float counted = e > 0.0f ? e : 0.0f;
     stiffnessRecords[kRecordFields * i + SolverRecord::kK] =
         dfsphStiffness(counted, factor[i], restDensity, dt);
@@ -140,6 +161,11 @@ struct FactorAndRatePass {
   template <class S, class V>
   SPH_HD_INLINE void addWall(Sum<S, V>& sum, const V& gradW, S volumeB) const {
     factor.addWall(sum.factor, gradW, volumeB);
+  }
+  template <class S, class V>
+  SPH_HD_INLINE void addMovingWall(Sum<S, V>& sum, const V& gradW, S volumeB,
+                                   const V& velocityB) const {
+    factor.addMovingWall(sum.factor, gradW, volumeB, velocityB);
   }
   template <class S, class V>
   SPH_HD_INLINE void finish(std::size_t i, const Sum<S, V>& sum) const {

@@ -145,9 +145,9 @@ float largestError(const FluidParticles<B>& fluid) {
 
 template <class B, class Kernels>
 SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
-                     const BoundaryParticles<B>& boundary, const FluidParameters& params,
-                     const SolverSettings& settings, SolverTarget target, float dt,
-                     NeighborWalk walk, Kernels kernels) {
+                     const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
+                     const FluidParameters& params, const SolverSettings& settings,
+                     SolverTarget target, float dt, NeighborWalk walk, Kernels kernels) {
   const RatePass rate{target,
                       params.mass,
                       params.restDensity,
@@ -173,7 +173,8 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
   // Only the density solve starts warm: the divergence solve comes first in a step, and its
   // first pass finds the step's factors and wall gradients that a warm start would need.
   if (settings.warmStart && target == SolverTarget::RestDensity)
-    runSolverPass(fluid, grid, boundary, stiffnessRecords, kernels, walk, correct, gradients);
+    runSolverPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, walk, correct,
+                  gradients);
   SolverReport report;
   for (;;) {
     if (report.iterations == 0 && target == SolverTarget::NoDivergence) {
@@ -181,9 +182,11 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
           {params.mass / params.restDensity, dfsphSmallestFactorSum(params.h),
            fluid.solverFactor.data(), fluid.solverWallGradient.data()},
           rate};
-      runSolverPass(fluid, grid, boundary, velocityRecords, kernels, walk, first, gradients);
+      runSolverPass(fluid, grid, boundary, objects, velocityRecords, kernels, walk, first,
+                    gradients);
     } else {
-      runSolverPass(fluid, grid, boundary, velocityRecords, kernels, walk, rate, gradients);
+      runSolverPass(fluid, grid, boundary, objects, velocityRecords, kernels, walk, rate,
+                    gradients);
     }
     report.averageError = averageError(fluid);
     const bool done =
@@ -193,7 +196,8 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
       report.largestError = largestError(fluid);
       return report;
     }
-    runSolverPass(fluid, grid, boundary, stiffnessRecords, kernels, walk, correct, gradients);
+    runSolverPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, walk, correct,
+                  gradients);
     ++report.iterations;
   }
 }
@@ -203,14 +207,15 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
 // One solve (see above); `dt` is the step the error is predicted over.
 template <class B>
 SolverReport solve(FluidParticles<B>& fluid, const Grid<B>& grid,
-                   const BoundaryParticles<B>& boundary, const FluidParameters& params,
-                   const SolverSettings& settings, SolverTarget target, float dt,
-                   NeighborWalk walk) {
+                   const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
+                   const FluidParameters& params, const SolverSettings& settings,
+                   SolverTarget target, float dt, NeighborWalk walk) {
   SolverReport report;
   if (fluid.count == 0) return report;
   detail::beginSolve(fluid, target, dt, settings.warmStart, params.restDensity);
   withKernels(params, [&](auto kernels) {
-    report = detail::iterate(fluid, grid, boundary, params, settings, target, dt, walk, kernels);
+    report = detail::iterate(fluid, grid, boundary, objects, params, settings, target, dt, walk,
+                             kernels);
   });
   detail::endSolve(fluid, target, dt);
   return report;

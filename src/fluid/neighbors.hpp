@@ -79,12 +79,21 @@ struct WallCells {
 
 template <class B>
 WallCells wallCells(const BoundaryParticles<B>& boundary) {
-  return WallCells{boundary.grid, boundary.cellStart.data()};
+  return WallCells{boundary.grid, boundary.count != 0 ? boundary.cellStart.data() : nullptr};
+}
+
+// Whether x is within one cell of the grid, so that its 27 cells can hold a neighbour: a
+// position farther out would be clamped to the edge and visit particles all out of reach.
+SPH_HD bool nearGrid(const GridSpec& g, Vec3 x) {
+  const Int3 c = cellCoordinate(g, x);
+  return c.x >= -1 && c.y >= -1 && c.z >= -1 && c.x <= g.dims.x && c.y <= g.dims.y &&
+         c.z <= g.dims.z;
 }
 
 template <class Visit>
 SPH_HD void forEachWallNeighbor(const WallCells& walls, Vec3 x, Visit&& visit) {
-  if (walls.cellStart != nullptr) forEachNeighbor(walls.spec, walls.cellStart, x, visit);
+  if (walls.cellStart != nullptr && nearGrid(walls.spec, x))
+    forEachNeighbor(walls.spec, walls.cellStart, x, visit);
 }
 
 }  // namespace sph::fluid

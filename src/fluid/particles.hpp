@@ -72,18 +72,22 @@ struct FluidParticles {
   Buffer<Vec4> warmStart;
 };
 
-// Static wall particles (Akinci et al. 2012), sorted by cell of their own grid once at set-up.
+// Boundary particles (Akinci et al. 2012), sorted by cell of their own grid: the static walls,
+// once at set-up; or the objects' surface particles where they take part in the fluid's
+// density and pressure solve, each time the object engine publishes them (moving: their
+// velocity is known).
 template <class B>
 struct BoundaryParticles {
   template <class T>
   using Buffer = typename B::template Buffer<T>;
   std::size_t count = 0;
-  GridSpec grid;                    // covers the walls with a cell to spare
+  GridSpec grid;                    // covers the particles with a cell to spare
   Buffer<Vec4> position;            // xyz; w = volume ψ_b, m³
-  Buffer<std::uint32_t> id;         // stable particle id
+  Buffer<Vec4> velocity;            // xyz, m/s; empty for the static walls
+  Buffer<std::uint32_t> id;         // stable particle id (walls); the engine's index (objects)
   Buffer<std::uint32_t> cellStart;  // cellCount + 1
-  // The CPU's SIMD passes: position and volume as four padded arrays (see FluidParticles),
-  // made once by prepareBoundary. Empty on the GPU.
+  // The CPU's SIMD passes: position and volume as four padded arrays (see FluidParticles).
+  // Empty on the GPU.
   Buffer<float> batchX, batchY, batchZ, batchVolume;
 };
 

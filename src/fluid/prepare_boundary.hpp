@@ -12,6 +12,27 @@
 
 namespace sph::fluid {
 
+// The CPU's SIMD passes: the boundary particles' positions and volumes (xyz, w, sorted) as four
+// padded arrays. Nothing on the GPU.
+template <class B>
+void uploadBatchArrays(BoundaryParticles<B>& boundary, const std::vector<Vec4>& position) {
+  if constexpr (B::kBatches) {
+    const std::size_t n = position.size();
+    // Far away, with no volume: the padding never passes a distance test.
+    std::vector<float> x(n + kBatchPadding, 1e30f), y(x), z(x), v(n + kBatchPadding, 0.0f);
+    for (std::size_t k = 0; k < n; ++k) {
+      x[k] = position[k].x;
+      y[k] = position[k].y;
+      z[k] = position[k].z;
+      v[k] = position[k].w;
+    }
+    B::upload(boundary.batchX, x.data(), x.size());
+    B::upload(boundary.batchY, y.data(), y.size());
+    B::upload(boundary.batchZ, z.data(), z.size());
+    B::upload(boundary.batchVolume, v.data(), v.size());
+  }
+}
+
 template <class B>
 void prepareBoundary(BoundaryParticles<B>& boundary, const std::vector<Vec3>& points,
                      std::uint32_t firstId, const FluidParameters& params) {
@@ -46,20 +67,7 @@ void prepareBoundary(BoundaryParticles<B>& boundary, const std::vector<Vec3>& po
   B::upload(boundary.position, position.data(), n);
   B::upload(boundary.id, id.data(), n);
   B::upload(boundary.cellStart, cellStart.data(), cellStart.size());
-  if constexpr (B::kBatches) {
-    // Far away, with no volume: the padding never passes a distance test.
-    std::vector<float> x(n + kBatchPadding, 1e30f), y(x), z(x), v(n + kBatchPadding, 0.0f);
-    for (std::size_t k = 0; k < n; ++k) {
-      x[k] = position[k].x;
-      y[k] = position[k].y;
-      z[k] = position[k].z;
-      v[k] = position[k].w;
-    }
-    B::upload(boundary.batchX, x.data(), x.size());
-    B::upload(boundary.batchY, y.data(), y.size());
-    B::upload(boundary.batchZ, z.data(), z.size());
-    B::upload(boundary.batchVolume, v.data(), v.size());
-  }
+  uploadBatchArrays(boundary, position);
 }
 
 }  // namespace sph::fluid

@@ -8,6 +8,7 @@
 //   Sum start<S, V>(i)                      what particle i sums, zeroed
 //   addFluid(sum, ∇W_ij, columns)           a fluid neighbour: columns[c] is float c of its record
 //   addWall(sum, ∇W_ib, volume)             a wall particle of volume ψ_b, if kWalls
+//   addMovingWall(sum, ∇W_ib, volume, v_b)  an object's particle as a boundary, if kWalls
 //   finish(i, sum)                          writes particle i's result
 // with S, V = float, Vec3 or FloatBatch, BatchVec3: the pass is written once for both walks.
 //
@@ -35,11 +36,14 @@ SPH_HD_INLINE V pairGradient(const Kernels& kernels, const Pair<S, V, M>& pair) 
 
 template <class B, class Kernels, class Pass>
 void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
-                const BoundaryParticles<B>& boundary, const float* records, Kernels kernels,
-                Pass pass, float* keptGradients) {
+                const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
+                const float* records, Kernels kernels, Pass pass, float* keptGradients) {
   const NeighborLists lists = neighborLists(fluid, grid);
   const WallCells walls = wallCells(boundary);
   const Vec4* wall = boundary.position.data();  // w: volume ψ_b
+  const WallCells objectCells = wallCells(objects);
+  const Vec4* object = objects.position.data();
+  const Vec4* objectVelocity = objects.velocity.data();
   const float h2 = kernels.h2;
   B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
@@ -49,6 +53,9 @@ void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
         // there.
         (void)walls;
         (void)wall;
+        (void)objectCells;
+        (void)object;
+        (void)objectVelocity;
         (void)keptGradients;
         auto sum = pass.template start<float, Vec3>(i);
         // Neighbour j's record and x_i - x_j.
@@ -93,6 +100,14 @@ void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
             if (r2 >= h2 || r2 <= 0.0f) return;
             pass.addWall(sum, pairGradient(kernels, makePair(rib, r2, true, h2)), xb.w);
           });
+          forEachWallNeighbor(objectCells, xi, [&](std::uint32_t k) {
+            const Vec4 xk = readOnly(object + k);
+            const Vec3 rik = xi - xyz(xk);
+            const float r2 = lengthSquared(rik);
+            if (r2 >= h2 || r2 <= 0.0f) return;
+            pass.addMovingWall(sum, pairGradient(kernels, makePair(rik, r2, true, h2)), xk.w,
+                               xyz(readOnly(objectVelocity + k)));
+          });
         }
         pass.finish(i, sum);
       });
@@ -104,7 +119,8 @@ namespace detail {
 
 template <class Kernels, class Pass>
 void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>& grid,
-                       const BoundaryParticles<CpuBackend>& boundary, const float* records,
+                       const BoundaryParticles<CpuBackend>& boundary,
+                       const BoundaryParticles<CpuBackend>& objects, const float* records,
                        Kernels kernels, Pass pass, float* keptGradients) {
   const NeighborLists lists = neighborLists(fluid, grid);
   const WallCells walls = wallCells(boundary);
@@ -112,6 +128,12 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
   const float* wy = boundary.batchY.data();
   const float* wz = boundary.batchZ.data();
   const float* wv = boundary.batchVolume.data();
+  const WallCells objectCells = wallCells(objects);
+  const float* ox = objects.batchX.data();
+  const float* oy = objects.batchY.data();
+  const float* oz = objects.batchZ.data();
+  const float* ov = objects.batchVolume.data();
+  const Vec4* objectVelocity = objects.velocity.data();  // padded with zeros
   const float h2 = kernels.h2;
   const FloatBatch h2Batch(h2), zero(0.0f);
   CpuBackend::forEach(fluid.count, [=](std::size_t i) {
@@ -163,6 +185,18 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
         if (stdx::none_of(near)) return;
         pass.addWall(sum, pairGradient(kernels, makePair(rib, r2, near, h2)), loadBatch(wv, b));
       });
+      forEachWallBatch(
+          objectCells, xs, [&](std::uint32_t k, const FloatBatch::mask_type& candidates) {
+            const BatchVec3 rik = xi - loadBatch(ox, oy, oz, k);
+            const FloatBatch r2 = dot(rik, rik);
+            const auto near = candidates && r2 < h2Batch && r2 > zero;
+            if (stdx::none_of(near)) return;
+            const BatchVec3 vk{FloatBatch([&](auto lane) { return objectVelocity[k + lane].x; }),
+                               FloatBatch([&](auto lane) { return objectVelocity[k + lane].y; }),
+                               FloatBatch([&](auto lane) { return objectVelocity[k + lane].z; })};
+            pass.addMovingWall(sum, pairGradient(kernels, makePair(rik, r2, near, h2)),
+                               loadBatch(ov, k), vk);
+          });
     }
     pass.finish(i, sum);
   });
@@ -177,17 +211,19 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
 // every pass computes them.
 template <class B, class Kernels, class Pass>
 void runSolverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
-                   const BoundaryParticles<B>& boundary, const float* records, Kernels kernels,
-                   [[maybe_unused]] NeighborWalk walk, const Pass& pass, float* keptGradients) {
+                   const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
+                   const float* records, Kernels kernels, [[maybe_unused]] NeighborWalk walk,
+                   const Pass& pass, float* keptGradients) {
 #if !defined(__CUDACC__)
   if constexpr (B::kBatches) {
     if (walk == NeighborWalk::Batched) {
-      detail::solverPassBatched(fluid, grid, boundary, records, kernels, pass, keptGradients);
+      detail::solverPassBatched(fluid, grid, boundary, objects, records, kernels, pass,
+                                keptGradients);
       return;
     }
   }
 #endif
-  solverPass(fluid, grid, boundary, records, kernels, pass, keptGradients);
+  solverPass(fluid, grid, boundary, objects, records, kernels, pass, keptGradients);
 }
 
 }  // namespace sph::fluid

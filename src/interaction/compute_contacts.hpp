@@ -5,7 +5,9 @@
 //                whether it is still inside the object that held it at the start;
 //   object pass  each object particle sums the reactions from the fluid particles it touches.
 // Both passes evaluate every pair with the same arguments, so each pair's two forces are exact
-// negations and no atomics are needed: the result is the same for any thread count.
+// negations and no atomics are needed: the result is the same for any thread count. With
+// boundary coupling (params.boundary) neither adds a force: the fluid pass only tracks
+// containment, and the pressure solve's reactions come from boundary_forces.hpp.
 // Reads the fluid's position, velocity, id, grid and acceleration and the object particles.
 // Writes the fluid's acceleration, the containment state and objects.force.
 #pragma once
@@ -20,13 +22,6 @@
 namespace sph::interaction {
 
 namespace detail {
-
-// Whether p is within one cell of the grid, so that its 27 cells can hold a contact.
-SPH_HD bool nearGrid(const GridSpec& g, Vec3 p) {
-  const Int3 c = cellCoordinate(g, p);
-  return c.x >= -1 && c.y >= -1 && c.z >= -1 && c.x <= g.dims.x && c.y <= g.dims.y &&
-         c.z <= g.dims.z;
-}
 
 // The force on fluid particle (xf, vf) from object particle (xo, vo, radius, cut): Meteer 2011,
 // eqs. 13-16 through the influence sphere, the spring scaled by the distance function.
@@ -91,12 +86,12 @@ std::size_t computeContacts(fluid::FluidParticles<B>& fluid, const fluid::Grid<B
         const float reach2 = objectGrid.cellSize * objectGrid.cellSize;
         float sideSum = 0.0f, weightSum = 0.0f;
         int sideCount = 0;
-        if (detail::nearGrid(objectGrid, xi)) {
+        if (fluid::nearGrid(objectGrid, xi)) {
           const Vec3 vi = xyz(velocity[i]);
           fluid::forEachNeighbor(objectGrid, objectCellStart, xi, [&](std::uint32_t o) {
             const Vec4 xo = readOnly(objectPosition + o);
             const Vec4 vo = readOnly(objectVelocity + o);
-            force += detail::fluidContactForce(p, xi, vi, xo, vo);
+            if (!p.boundary) force += detail::fluidContactForce(p, xi, vi, xo, vo);
             const Vec4 no = readOnly(objectNormal + o);
             // Torn particles (w of the velocity) have no surface to be on a side of.
             if (container >= 0 && int(no.w) == container && vo.w == 0.0f) {
@@ -138,7 +133,7 @@ std::size_t computeContacts(fluid::FluidParticles<B>& fluid, const fluid::Grid<B
         const Vec4 vo = objectVelocity[o];
         Vec3 force{0.0f, 0.0f, 0.0f};
         float touching = 0.0f;
-        if (detail::nearGrid(spec, xyz(xo))) {
+        if (!p.boundary && fluid::nearGrid(spec, xyz(xo))) {
           const float reach = contactReach(p, xo.w);
           fluid::forEachNeighbor(spec, fluidCellStart, xyz(xo), [&](std::uint32_t j) {
             const Vec3 xj = xyz(readOnly(position + j));

@@ -20,6 +20,10 @@ struct InteractionParameters {
   float fluidMass;        // kg
   float maxAcceleration;  // m/s², clamp on a fluid particle's total acceleration (§8.3)
   bool cutAwareDamping;
+  // The objects' surface particles are boundary particles of the fluid's density and pressure
+  // solve (Akinci et al. 2012, with the incompressible solver) rather than the contact forces'
+  // partners; the contact pass then only tracks containment.
+  bool boundary;
 };
 
 // The largest distance at which a fluid particle and an object particle of radius

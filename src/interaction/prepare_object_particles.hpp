@@ -9,17 +9,23 @@
 
 #include "backend/cpu_parallel.hpp"
 #include "interaction/object_particles.hpp"
+#include "interaction/prepare_object_boundary.hpp"
 #include "sph/object_exchange.hpp"
 
 namespace sph::interaction {
 
 // Returns the largest speed of an object particle inside the domain (the box the fluid can
 // be in), m/s: a torn piece falling away below it limits nothing.
+// With boundary coupling (params.boundary) also the same particles as the fluid's boundary
+// particles (prepare_object_boundary.hpp); else `boundary` is left empty.
 template <class B>
-float prepareObjectParticles(ObjectParticles<B>& objects, const ObjectSurface& surface,
-                             const InteractionParameters& params, Vec3 domainMin, Vec3 domainMax) {
+float prepareObjectParticles(ObjectParticles<B>& objects, fluid::BoundaryParticles<B>& boundary,
+                             const ObjectSurface& surface, const InteractionParameters& params,
+                             const fluid::FluidParameters& fluidParams, Vec3 domainMin,
+                             Vec3 domainMax) {
   const std::size_t n = surface.size();
   objects.count = n;
+  boundary.count = 0;
   if (n == 0) return 0.0f;
   Vec3 lo = xyz(surface.position[0]), hi = lo;
   float reach = 0.0f, maxSpeed2 = 0.0f;
@@ -32,7 +38,8 @@ float prepareObjectParticles(ObjectParticles<B>& objects, const ObjectSurface& s
                           p.x <= domainMax.x && p.y <= domainMax.y && p.z <= domainMax.z;
     if (inDomain) maxSpeed2 = fmaxf(maxSpeed2, lengthSquared(xyz(surface.velocity[k])));
   }
-  objects.grid = makeGrid(lo, hi, reach);
+  // Boundary particles are found through this grid from the fluid, out to h.
+  objects.grid = makeGrid(lo, hi, params.boundary ? fmaxf(reach, fluidParams.h) : reach);
   const GridSpec grid = objects.grid;
   std::vector<std::uint32_t> cell(n), order(n), cellStart(grid.cellCount + 1);
   for (std::size_t k = 0; k < n; ++k)
@@ -53,6 +60,8 @@ float prepareObjectParticles(ObjectParticles<B>& objects, const ObjectSurface& s
   B::upload(objects.normal, normal.data(), n);
   B::upload(objects.handle, handle.data(), n);
   B::upload(objects.cellStart, cellStart.data(), cellStart.size());
+  if (params.boundary)
+    prepareObjectBoundary(boundary, position, velocity, cellStart, grid, fluidParams);
 
   std::int32_t objectCount = 0;
   for (std::int32_t o : surface.object) objectCount = o + 1 > objectCount ? o + 1 : objectCount;

@@ -47,6 +47,8 @@ DfsphDesc readDfsph(const ObjectReader& in) {
   d.maxIterations = in.integer("max_iterations", std::max(d.maxIterations, d.minIterations),
                                std::max(d.minIterations, 1), 10000);
   d.warmStart = in.boolean("warm_start", d.warmStart);
+  d.divergenceSolve = in.boolean("divergence_solve", d.divergenceSolve);
+  d.densitySolve = in.boolean("density_solve", d.densitySolve);
   d.forceFactor = in.number("force_factor", d.forceFactor, kUnitStep);
   return d;
 }
@@ -124,6 +126,9 @@ DeformableDesc readDeformable(const ObjectReader& in) {
   d.springReach = in.number("spring_reach", d.springReach, NumberRule{1, 3, false, false});
   d.pinned = readBoxes(in, "pinned");
   d.cuts = readBoxes(in, "cuts");
+  d.model = in.choice("model", d.model, kDeformableModelNames);
+  d.substeps = in.integer("substeps", d.substeps, 1, 1000);
+  d.bendingStiffness = in.number("bending_stiffness", d.bendingStiffness, kNonNegative);
   return d;
 }
 
@@ -154,6 +159,7 @@ std::vector<ObjectDesc> readObjects(const ObjectReader& root) {
 
 InteractionDesc readInteraction(const ObjectReader& in) {
   InteractionDesc i;
+  i.coupling = in.choice("coupling", i.coupling, kCouplingNames);
   i.influenceRatio = in.number("influence_ratio", i.influenceRatio, NumberRule{1, 4, false, false});
   i.distanceExponent =
       in.number("distance_exponent", i.distanceExponent, NumberRule{0, 10, false, false});
@@ -195,6 +201,16 @@ void checkObjectNames(const ReadContext& context, const Scene& scene) {
                                                                  "), got \"" + name + "\"");
     }
   }
+}
+
+// Boundary coupling gives the objects the incompressible solver's pressure: there is none
+// without it.
+void checkCoupling(const ReadContext& context, const Scene& scene) {
+  if (scene.interaction.coupling == ObjectCoupling::Boundary &&
+      scene.fluid.solver != FluidSolver::Dfsph)
+    context.fail("interaction.coupling",
+                 "expected \"contact\" with fluid.solver \"wcsph\" (\"boundary\" needs "
+                 "fluid.solver \"dfsph\"), got \"boundary\"");
 }
 
 CalibrationDesc readCalibration(const ObjectReader& in) {
@@ -313,6 +329,7 @@ Scene parseScene(const json& document, const std::string& sourceName,
   scene.failure = readFailure(root.object("failure"));
   checkGeometry(context, scene);
   checkObjectNames(context, scene);
+  checkCoupling(context, scene);
   return scene;
 }
 

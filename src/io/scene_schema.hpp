@@ -63,6 +63,8 @@ inline constexpr NamedValue<PressureForm> kPressureFormNames[] = {
     {"paper", PressureForm::Paper}, {"symmetric", PressureForm::Symmetric}};
 inline constexpr NamedValue<FluidSolver> kSolverNames[] = {{"wcsph", FluidSolver::Wcsph},
                                                            {"dfsph", FluidSolver::Dfsph}};
+inline constexpr NamedValue<ObjectCoupling> kCouplingNames[] = {
+    {"contact", ObjectCoupling::Contact}, {"boundary", ObjectCoupling::Boundary}};
 inline constexpr NamedValue<ViscosityModel> kViscosityNames[] = {
     {"muller", ViscosityModel::Muller}, {"artificial", ViscosityModel::Artificial}};
 inline constexpr NamedValue<FrameFormat> kFormatNames[] = {{"vtp", FrameFormat::Vtp},
@@ -77,6 +79,8 @@ inline constexpr NamedValue<ObjectMotion> kMotionNames[] = {
     {"rigid", ObjectMotion::Rigid},
     {"deformable", ObjectMotion::Deformable},
     {"kinematic", ObjectMotion::Kinematic}};
+inline constexpr NamedValue<DeformableModel> kDeformableModelNames[] = {
+    {"springs", DeformableModel::Springs}, {"xpbd", DeformableModel::Xpbd}};
 inline constexpr NamedValue<ShapeKind> kShapeNames[] = {{"box", ShapeKind::Box},
                                                         {"sphere", ShapeKind::Sphere},
                                                         {"capsule", ShapeKind::Capsule},

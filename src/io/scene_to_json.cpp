@@ -52,6 +52,8 @@ json fluidToJson(const FluidDesc& fluid) {
         {"min_iterations", fluid.dfsph.minIterations},
         {"max_iterations", fluid.dfsph.maxIterations},
         {"warm_start", fluid.dfsph.warmStart},
+        {"divergence_solve", fluid.dfsph.divergenceSolve},
+        {"density_solve", fluid.dfsph.densitySolve},
         {"force_factor", fluid.dfsph.forceFactor}}},
       {"kernel", nameOf(fluid.kernel, kKernelNames)},
       {"eos", nameOf(fluid.eos, kEosNames)},
@@ -116,12 +118,16 @@ json objectToJson(const ObjectDesc& o) {
             {"breaking_strain", d.breakingStrain},
             {"spring_reach", d.springReach},
             {"pinned", boxesToJson(d.pinned)},
-            {"cuts", boxesToJson(d.cuts)}}},
+            {"cuts", boxesToJson(d.cuts)},
+            {"model", nameOf(d.model, kDeformableModelNames)},
+            {"substeps", d.substeps},
+            {"bending_stiffness", d.bendingStiffness}}},
           {"keyframes", std::move(keyframes)}};
 }
 
 json interactionToJson(const InteractionDesc& i) {
-  return {{"influence_ratio", i.influenceRatio},
+  return {{"coupling", nameOf(i.coupling, kCouplingNames)},
+          {"influence_ratio", i.influenceRatio},
           {"distance_exponent", i.distanceExponent},
           {"stiffness", toJson(i.stiffness)},
           {"damping", toJson(i.damping)},

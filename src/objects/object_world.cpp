@@ -12,6 +12,7 @@
 #include "objects/rigid_body.hpp"
 #include "objects/shape_sampling.hpp"
 #include "objects/springs.hpp"
+#include "objects/xpbd.hpp"
 #include "sph/core/time_step.hpp"
 #include "sph/error.hpp"
 
@@ -34,6 +35,9 @@ constexpr double kDefaultWeightStrain = 0.01;
 constexpr double kStandardGravity = 9.80665;  // for the default stiffness in zero gravity
 // A diverging run must not turn one step into an endless loop of substeps.
 constexpr double kMaxSubsteps = 1e6;
+// Bending triples join nearest neighbours: those closer than this × spacing, a lattice's edges
+// (1) and face diagonals (√2) but not the next shell (2).
+constexpr double kNearestShell = 1.5;
 
 // Whether the segment from a to b passes through the box (the slab test).
 bool segmentMeetsBox(const AxisBox& box, DVec3 a, DVec3 b) {
@@ -106,6 +110,8 @@ struct ObjectWorld::Impl {
   std::vector<Object> objects;
   std::vector<RigidBody> rigid;
   std::vector<SpringNetwork> networks;
+  std::vector<DeformableModel> models;  // per network
+  std::vector<XpbdConstraints> xpbd;    // per network; unused under the springs model
   std::vector<KinematicPath> paths;
 
   // Stability data, fixed at build time.
@@ -113,6 +119,7 @@ struct ObjectWorld::Impl {
   double fastestSpringOmega = 0.0;    // rad/s
   double fastestSpringDamping = 0.0;  // c / m_reduced, 1/s
   double lightestContactMass = std::numeric_limits<double>::infinity();
+  int xpbdSubsteps = 0;  // the most any XPBD deformable asks for per step
   float minRadius = std::numeric_limits<float>::infinity(), maxRadius = 0.0f;
   PointGrid contactGrid;
   std::vector<DVec3> statics;  // settings.staticParticles
@@ -241,6 +248,10 @@ void ObjectWorld::Impl::makeDeformable(const ObjectDesc& desc, Object& object,
   if (!(d.springReach > 1.0) || !std::isfinite(d.springReach))
     throw InputError(where + ".deformable.spring_reach: expected a number > 1 (× spacing), got " +
                      formatNumber(d.springReach));
+  requireNonNegative(d.bendingStiffness, where, "deformable.bending_stiffness");
+  if (d.substeps < 1)
+    throw InputError(where + ".deformable.substeps: expected an integer ≥ 1, got " +
+                     std::to_string(d.substeps));
   const double spacing = object.shape.spacing;
   for (std::size_t i = object.first; i < object.first + object.count; ++i) {
     for (const AxisBox& box : d.pinned)
@@ -273,12 +284,21 @@ void ObjectWorld::Impl::makeDeformable(const ObjectDesc& desc, Object& object,
   const double reducedMass = 0.5 * particleMass;
   net.damping = d.damping > 0.0 ? d.damping : 2.0 * std::sqrt(net.stiffness * reducedMass);
   net.breakingStrain = d.breakingStrain;
-  if (!net.springs.empty()) {
+  XpbdConstraints constraints;
+  if (d.model == DeformableModel::Xpbd) {
+    // Constraints, not forces: their stiffness does not bound the substep.
+    constraints = makeXpbdConstraints(net, position, published.mass, published.pinned,
+                                      kNearestShell * spacing, d.bendingStiffness, d.substeps);
+    breakBendingAcrossTears(net, constraints);  // those across the cuts
+    xpbdSubsteps = std::max(xpbdSubsteps, d.substeps);
+  } else if (!net.springs.empty()) {
     fastestSpringOmega = std::max(fastestSpringOmega, std::sqrt(net.stiffness / reducedMass));
     fastestSpringDamping = std::max(fastestSpringDamping, net.damping / reducedMass);
   }
   object.body = networks.size();
   networks.push_back(std::move(net));
+  models.push_back(d.model);
+  xpbd.push_back(std::move(constraints));
 }
 
 void ObjectWorld::Impl::placeKinematic(const Object& object) {
@@ -330,9 +350,16 @@ void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce
       addStaticContactForces(settings.contact, particles, statics, settings.staticRadius,
                              staticGrid, force);
   }
-  for (const SpringNetwork& net : networks) addSpringForces(net, position, velocity, force);
+  for (std::size_t b = 0; b < networks.size(); ++b)
+    if (models[b] == DeformableModel::Springs)
+      addSpringForces(networks[b], position, velocity, force);
 
-  for (SpringNetwork& net : networks) {
+  for (std::size_t b = 0; b < networks.size(); ++b) {
+    SpringNetwork& net = networks[b];
+    if (models[b] == DeformableModel::Xpbd) {
+      xpbdSubstep(net, xpbd[b], h, gravity, force, position, velocity, published.cut);
+      continue;
+    }
     integrateDeformable(net, h);
     breakOverstretched(net, position, published.cut);
   }
@@ -456,6 +483,9 @@ void ObjectWorld::step(double dt, const std::vector<Vec3>& externalForce) {
   const double stable = w.stableSubstep();
   double count = 1.0;
   if (stable > 0.0 && std::isfinite(stable)) count = std::min(std::ceil(dt / stable), kMaxSubsteps);
+  // XPBD deformables take at least their own substeps; more, when contacts need them, only
+  // shorten theirs.
+  count = std::max(count, double(w.xpbdSubsteps));
   const std::size_t substeps = std::size_t(std::max(count, 1.0));
   const double start = w.time, h = dt / double(substeps);
   for (std::size_t s = 0; s < substeps; ++s) w.substep(h, externalForce);

@@ -1,7 +1,8 @@
 // The built-in engine for particle-based objects (Meteer 2011, §4.3): rigid bodies
-// (Newton–Euler), deformables (particles joined by springs that can break), pinned particles
-// and kinematic actuators that follow keyframes. Runs on the host; the fluid sees only the
-// surface particles it publishes and returns forces on them (interaction/exchange).
+// (Newton–Euler), deformables (particles joined by springs that can break: explicit forces or
+// XPBD constraints), pinned particles and kinematic actuators that follow keyframes. Runs on the
+// host; the fluid sees only the surface particles it publishes and returns forces on them
+// (interaction/exchange).
 #pragma once
 
 #include <cstddef>
@@ -52,7 +53,7 @@ struct ObjectInfo {
   double mass = 0.0;              // kg (kinematic: of its particles, for reports)
   Vec3 centreOfMass{0, 0, 0};     // m
   Vec3 velocity{0, 0, 0};         // of the centre of mass, m/s
-  std::size_t springs = 0;        // deformables
+  std::size_t springs = 0;        // deformables (xpbd: distance constraints, not bending)
   std::size_t brokenSprings = 0;  // deformables, including those cut at the start
 };
 
@@ -72,12 +73,12 @@ class ObjectWorld {
 
   // Advances by dt. `externalForce` holds, per particle index, a force (N) acting throughout
   // the step (the fluid's contact forces); empty means none. Substeps internally as the
-  // springs, masses and contacts require (`stableSubstep`); kinematic objects follow their
-  // keyframes; pinned particles stay.
+  // springs, masses and contacts require (`stableSubstep`), and no fewer times than any XPBD
+  // deformable's `substeps`; kinematic objects follow their keyframes; pinned particles stay.
   void step(double dt, const std::vector<Vec3>& externalForce);
 
   // The largest internal step the explicit integration is stable with, for the stiffest
-  // spring or contact on the lightest particle.
+  // spring or contact on the lightest particle. XPBD deformables' constraints do not bound it.
   double stableSubstep() const;
 
   // Whether p lies in the interior of object `object` as built (its initial shape: box,

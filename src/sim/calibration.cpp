@@ -74,6 +74,7 @@ double largestBlockSpeed(const Scene& scene) {
 // compressed neighbourhood, far above what a calm flow sees.
 void calibrateContact(const Scene& scene, Calibration& out) {
   const InteractionDesc& i = scene.interaction;
+  out.objectsAsBoundary = i.coupling == ObjectCoupling::Boundary;
   const double cflDt = scene.time.cfl * out.supportRadius / out.soundSpeed;
   const double peak = std::exp(i.distanceExponent);
   out.contactStiffnessFromScene = i.stiffness.has_value();
@@ -101,6 +102,7 @@ interaction::InteractionParameters interactionParameters(const Scene& scene, con
   p.fluidMass = static_cast<float>(c.mass);
   p.maxAcceleration = static_cast<float>(c.maxAcceleration);
   p.cutAwareDamping = i.cutAwareDamping;
+  p.boundary = c.objectsAsBoundary;
   return p;
 }
 

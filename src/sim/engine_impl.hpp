@@ -88,13 +88,14 @@ class EngineImpl final : public FluidEngine {
 
   std::size_t buildGrid() override { return fluid::buildGrid(fluid_, grid_, domain_); }
   void computeDensityAndPressure() override {
-    fluid::computeDensityAndPressure(fluid_, grid_, boundary_, params_, walk_);
+    fluid::computeDensityAndPressure(fluid_, grid_, boundary_, objectBoundary_, params_, walk_);
   }
   void computeForces() override { fluid::computeForces(fluid_, grid_, boundary_, params_, walk_); }
   void prepareSolver() override { fluid::prepareSolver(fluid_); }
   fluid::SolverReport solve(const fluid::SolverSettings& settings, fluid::SolverTarget target,
                             float dt) override {
-    return fluid::solve(fluid_, grid_, boundary_, params_, settings, target, dt, walk_);
+    return fluid::solve(fluid_, grid_, boundary_, objectBoundary_, params_, settings, target, dt,
+                        walk_);
   }
   fluid::StepMeasures measureStep() override {
     return fluid::measureStep(fluid_, params_.restDensity);
@@ -104,7 +105,11 @@ class EngineImpl final : public FluidEngine {
 
   float setObjectSurface(const ObjectSurface& surface,
                          const interaction::InteractionParameters& params) override {
-    return interaction::prepareObjectParticles(objects_, surface, params, domain_.min, domain_.max);
+    return interaction::prepareObjectParticles(objects_, objectBoundary_, surface, params, params_,
+                                               domain_.min, domain_.max);
+  }
+  void addBoundaryForces() override {
+    interaction::addBoundaryForces(fluid_, grid_, objectBoundary_, objects_, params_);
   }
   std::size_t computeContacts(const interaction::InteractionParameters& params) override {
     return interaction::computeContacts(fluid_, grid_, objects_, containment_, params);
@@ -179,6 +184,7 @@ class EngineImpl final : public FluidEngine {
   fluid::BoundaryParticles<B> boundary_;
   fluid::Grid<B> grid_;
   interaction::ObjectParticles<B> objects_;
+  fluid::BoundaryParticles<B> objectBoundary_;  // the objects', with boundary coupling
   interaction::ContainmentState<B> containment_;
 };
 

@@ -82,6 +82,9 @@ class FluidEngine {
                                  const interaction::InteractionParameters& params) = 0;
   // Adds the contact forces to the fluid's accelerations; returns the pairs in contact.
   virtual std::size_t computeContacts(const interaction::InteractionParameters& params) = 0;
+  // With boundary coupling, after the density solve: the pressure's reactions on the objects'
+  // particles, added to the forces downloadObjectForces gives.
+  virtual void addBoundaryForces() = 0;
   virtual HostObjectForces downloadObjectForces() const = 0;
   // Which object holds each fluid particle (-1: none), by id; all start inside.
   virtual void setContainers(const std::vector<std::int32_t>& byId) = 0;

@@ -21,14 +21,16 @@ void Simulation::step(double until) {
   StepProfile& profile = s.profile;
   using detail::timedMs;
   s.surfaceMeasured = false;
+  profile.interaction = timedMs([&] { s.receiveBoundaryObjects(); });
   profile.buildGrid = timedMs([&] { s.removed += engine.buildGrid(); });
   profile.densityPressure = timedMs([&] { engine.computeDensityAndPressure(); });
   s.neighboursListed = true;
   profile.divergenceSolve = timedMs([&] { s.solveDivergence(); });
   profile.forces = timedMs([&] { engine.computeForces(); });
-  profile.interaction = timedMs([&] { s.interact(); });
+  profile.interaction += timedMs([&] { s.interact(); });
   profile.timeStep = timedMs([&] { s.dt = s.chooseTimeStep(until); });
   profile.densitySolve = timedMs([&] { s.solveDensity(); });
+  profile.interaction += timedMs([&] { s.collectObjectForces(); });
   profile.integrate = timedMs([&] { s.clamped += engine.integrate(float(s.dt)); });
   profile.objects = timedMs([&] { s.advanceObjects(); });
   s.time = (s.dt == until - s.time) ? until : s.time + s.dt;

@@ -143,15 +143,39 @@ struct Simulation::Impl {
     return byId;
   }
 
-  // Meteer 2011, §7, steps 2-4: the engine's newest surface particles, collisions, contact forces.
-  void interact() {
-    if (!objects) return;
+  // Meteer 2011, §7, step 2: the engine's newest surface particles. Boundary particles are
+  // read before the density pass that counts them; contact partners when the contacts are
+  // computed, the engine's step having run beside the fluid's passes until then.
+  bool objectsAsBoundary() const { return objects && interactionParams.boundary; }
+  void receiveObjects() {
     objects->wait();
     objects->exchange().readIfNew(seenPublication, [&](const ObjectSurface& surface) {
       objectMaxSpeed = engine->setObjectSurface(surface, interactionParams);
     });
+  }
+  void receiveBoundaryObjects() {
+    if (objectsAsBoundary()) receiveObjects();
+  }
+
+  // Meteer 2011, §7, steps 3-4: collisions and contact forces (with boundary coupling, only
+  // whether each particle is still inside its container).
+  void interact() {
+    if (!objects) return;
+    if (!objectsAsBoundary()) receiveObjects();
     contactPairs = engine->computeContacts(interactionParams);
+  }
+
+  // The fluid's forces on the objects' particles: the contact forces, or with boundary
+  // coupling the reactions of the pressure the solves have just given, at the positions they
+  // were computed at.
+  void collectObjectForces() {
+    if (!objects) return;
+    if (objectsAsBoundary()) engine->addBoundaryForces();
     objectForces = engine->downloadObjectForces();
+    if (objectsAsBoundary()) {  // the pairs within h that pushed
+      contactPairs = 0;
+      for (const Vec4& f : objectForces.force) contactPairs += std::uint64_t(f.w);
+    }
   }
 
   // The engine receives this step's forces and takes its own step(s) over dt.
@@ -228,10 +252,11 @@ struct Simulation::Impl {
     divergenceReport = engine->solve(solverSettings(fluid::SolverTarget::NoDivergence),
                                      fluid::SolverTarget::NoDivergence, float(dt));
     solverTotals.divergenceIterations += std::uint64_t(divergenceReport.iterations);
+    if (!scene.fluid.dfsph.divergenceSolve) divergenceReport.converged = true;  // not asked to
     if (!divergenceReport.converged) ++solverTotals.unconvergedSolves;
   }
   void solveDensity() {
-    if (!incompressible()) return;
+    if (!incompressible() || !scene.fluid.dfsph.densitySolve) return;
     densityReport = engine->solve(solverSettings(fluid::SolverTarget::RestDensity),
                                   fluid::SolverTarget::RestDensity, float(dt));
     solverTotals.densityIterations += std::uint64_t(densityReport.iterations);
@@ -244,6 +269,10 @@ struct Simulation::Impl {
                                                                    : d.divergenceTolerance);
     s.minIterations = d.minIterations;
     s.maxIterations = d.maxIterations;
+    // Left out, the divergence solve still makes its first pass: the factors and the walls'
+    // gradients of the step, which the density solve needs, and the error it reports.
+    if (target == fluid::SolverTarget::NoDivergence && !d.divergenceSolve)
+      s.minIterations = s.maxIterations = 0;
     s.warmStart = d.warmStart;
     // Six tenths of a full neighbourhood on the initial lattice: (4/3) π (h/d)³ neighbours.
     const double ratio = scene.fluid.supportRatio;
@@ -278,10 +307,11 @@ struct Simulation::Impl {
   // Meteer 2011, §8.3: contacts stay resolved, and no object particle moves more than a quarter of
   // the fluid's radius in a step, so nothing tunnels.
   double objectTimeStep() const {
+    const double travel = travelTimeStep(0.25 * interactionParams.fluidRadius, objectMaxSpeed);
+    if (interactionParams.boundary) return travel;  // no contact springs
     // The stiffest contact is at the centre of the influence sphere, where φ = e^β.
     const double contact = springTimeStep(calibration.mass, calibration.contactStiffness,
                                           std::exp(scene.interaction.distanceExponent));
-    const double travel = travelTimeStep(0.25 * interactionParams.fluidRadius, objectMaxSpeed);
     return std::min(contact, travel);
   }
 

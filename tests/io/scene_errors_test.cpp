@@ -120,6 +120,16 @@ TEST(SceneErrors, ValuesOutOfRange) {
       {"/walls/0/layers", 5, "walls[0].layers: expected an integer in [1, 4], got 5"},
       {"/walls/0/layers", 2.5, "walls[0].layers: expected an integer in [1, 4], got 2.5"},
       {"/walls/0/closed", "no", "walls[0].closed: expected true or false"},
+      {"/objects/0/deformable/model", "fem",
+       "objects[0].deformable.model: expected one of \"springs\", \"xpbd\", got \"fem\""},
+      {"/objects/0/deformable/substeps", 0,
+       "objects[0].deformable.substeps: expected an integer in [1, 1000], got 0"},
+      {"/objects/0/deformable/substeps", 2.5,
+       "objects[0].deformable.substeps: expected an integer in [1, 1000], got 2.5"},
+      {"/objects/0/deformable/bending_stiffness", -1,
+       "objects[0].deformable.bending_stiffness: expected a non-negative number, got -1"},
+      {"/interaction/coupling", "glue",
+       "interaction.coupling: expected one of \"contact\", \"boundary\", got \"glue\""},
       {"/calibration/mass", -1, "calibration.mass: expected a positive number or null, got -1"},
       {"/calibration/max_expected_speed", 0, "calibration.max_expected_speed: expected a pos"},
       {"/calibration/speed_of_sound", "fast", "calibration.speed_of_sound: expected a positive"},
@@ -194,6 +204,13 @@ TEST(SceneErrors, BoxesMustLieInsideTheDomain) {
             "[-0.1, 0, -0.2] to [1.5, 1.2, 0.3], got [1.2, 0.1, 0.4]");
   expectContains(parseError(with(completeSceneJson(), "/walls/0/min", {-0.5, 0, 0})),
                  {"scenes/x.json: walls[0].min: expected a point inside the domain box"});
+}
+
+// Boundary coupling hands the objects the incompressible solver's pressure: none without it.
+TEST(SceneErrors, BoundaryCouplingNeedsTheIncompressibleSolver) {
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/fluid/solver", "wcsph")),
+            "scenes/x.json: interaction.coupling: expected \"contact\" with fluid.solver "
+            "\"wcsph\" (\"boundary\" needs fluid.solver \"dfsph\"), got \"boundary\"");
 }
 
 }  // namespace

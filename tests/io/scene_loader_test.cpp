@@ -70,6 +70,20 @@ TEST(SceneLoader, CompleteSceneSetsEveryField) {
   EXPECT_EQ(scene.walls[0].layers, 3);
   EXPECT_TRUE(scene.walls[0].closed);
 
+  ASSERT_EQ(scene.objects.size(), 1u);
+  const DeformableDesc& vessel = scene.objects[0].deformable;
+  EXPECT_EQ(vessel.stiffness, 30.0);
+  EXPECT_EQ(vessel.damping, 0.002);
+  EXPECT_EQ(vessel.breakingStrain, 0.3);
+  EXPECT_EQ(vessel.springReach, 2.2);
+  ASSERT_EQ(vessel.pinned.size(), 1u);
+  EXPECT_EQ(vessel.pinned[0].max, (Vec3d{0.31, 0.4, 0.1}));
+  ASSERT_EQ(vessel.cuts.size(), 1u);
+  EXPECT_EQ(vessel.cuts[0].min, (Vec3d{0.5, 0.2, -0.01}));
+  EXPECT_EQ(vessel.model, DeformableModel::Xpbd);
+  EXPECT_EQ(vessel.substeps, 12);
+  EXPECT_EQ(vessel.bendingStiffness, 5.0);
+
   EXPECT_EQ(scene.calibration.mass, 0.008);
   EXPECT_EQ(scene.calibration.maxExpectedSpeed, 3.5);
   EXPECT_EQ(scene.calibration.speedOfSound, 35.0);
@@ -110,6 +124,16 @@ TEST(SceneLoader, AbsentKeysTakeTheDefaultsOfSceneHpp) {
   EXPECT_FALSE(scene.calibration.speedOfSound.has_value());
   EXPECT_FALSE(scene.time.fixedDt.has_value());
   EXPECT_EQ(scene.output.format, FrameFormat::Vtp);
+}
+
+TEST(SceneLoader, DeformablesDefaultToTheSpringModel) {
+  json document = minimalSceneJson();
+  document["objects"] = json::parse(R"([{"motion": "deformable",
+                                          "shape": {"type": "sphere", "radius": 0.1}}])");
+  const DeformableDesc d = parseScene(document, kSource).objects.at(0).deformable;
+  EXPECT_EQ(d.model, DeformableModel::Springs);  // existing scenes run as before
+  EXPECT_EQ(d.substeps, 8);
+  EXPECT_EQ(d.bendingStiffness, 0.0);
 }
 
 TEST(SceneLoader, NullOptionalValuesAreUnset) {

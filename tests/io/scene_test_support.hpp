@@ -35,7 +35,8 @@ inline nlohmann::json completeSceneJson() {
       "rest_density": 998.2, "spacing": 0.02, "support_ratio": 2.5,
       "solver": "dfsph",
       "dfsph": {"density_tolerance": 0.001, "divergence_tolerance": 0.002, "min_iterations": 2,
-                "max_iterations": 50, "warm_start": false, "force_factor": 0.05},
+                "max_iterations": 50, "warm_start": false, "divergence_solve": false,
+                "density_solve": false, "force_factor": 0.05},
       "kernel": "wendland_c2", "eos": "tait", "clamp_negative_pressure": false,
       "pressure_form": "paper",
       "viscosity": {"model": "muller", "value": 0.05, "wall_friction": 0.4},
@@ -48,6 +49,17 @@ inline nlohmann::json completeSceneJson() {
     },
     "walls": [{"type": "tank", "min": [0, 0, -0.15], "max": [1.4, 1.0, 0.25], "layers": 3,
                "closed": true}],
+    "objects": [{"name": "vessel", "motion": "deformable",
+                 "shape": {"type": "tube", "center": [0.5, 0.3, 0], "radius": 0.05, "length": 0.4},
+                 "deformable": {"stiffness": 30, "damping": 0.002, "breaking_strain": 0.3,
+                                "spring_reach": 2.2,
+                                "pinned": [{"min": [0.2, 0.2, -0.1], "max": [0.31, 0.4, 0.1]}],
+                                "cuts": [{"min": [0.5, 0.2, -0.01], "max": [0.6, 0.26, 0.01]}],
+                                "model": "xpbd", "substeps": 12, "bending_stiffness": 5}}],
+    "interaction": {"coupling": "boundary", "influence_ratio": 1.8, "distance_exponent": 3,
+                    "stiffness": 12, "damping": 0.5, "shear": 0.1, "max_acceleration": 900,
+                    "cut_aware_damping": false},
+    "object_engine": {"rate": 2, "own_thread": false},
     "calibration": {"mass": 0.008, "max_expected_speed": 3.5, "speed_of_sound": 35,
                     "stiffness": 1.75e5},
     "time": {"duration": 2.5, "cfl": 0.3, "force_factor": 0.2, "viscous_factor": 0.1,
@@ -93,6 +105,8 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
   EXPECT_EQ(fa.dfsph.minIterations, fb.dfsph.minIterations);
   EXPECT_EQ(fa.dfsph.maxIterations, fb.dfsph.maxIterations);
   EXPECT_EQ(fa.dfsph.warmStart, fb.dfsph.warmStart);
+  EXPECT_EQ(fa.dfsph.divergenceSolve, fb.dfsph.divergenceSolve);
+  EXPECT_EQ(fa.dfsph.densitySolve, fb.dfsph.densitySolve);
   EXPECT_EQ(fa.dfsph.forceFactor, fb.dfsph.forceFactor);
   EXPECT_EQ(fa.kernel, fb.kernel);
   EXPECT_EQ(fa.eos, fb.eos);
@@ -115,6 +129,32 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.walls[i].layers, b.walls[i].layers);
     EXPECT_EQ(a.walls[i].closed, b.walls[i].closed);
   }
+  ASSERT_EQ(a.objects.size(), b.objects.size());
+  for (std::size_t i = 0; i < a.objects.size(); ++i) {
+    const DeformableDesc& da = a.objects[i].deformable;
+    const DeformableDesc& db = b.objects[i].deformable;
+    EXPECT_EQ(da.stiffness, db.stiffness);
+    EXPECT_EQ(da.damping, db.damping);
+    EXPECT_EQ(da.breakingStrain, db.breakingStrain);
+    EXPECT_EQ(da.springReach, db.springReach);
+    ASSERT_EQ(da.pinned.size(), db.pinned.size());
+    for (std::size_t k = 0; k < da.pinned.size(); ++k) expectBoxesEqual(da.pinned[k], db.pinned[k]);
+    ASSERT_EQ(da.cuts.size(), db.cuts.size());
+    for (std::size_t k = 0; k < da.cuts.size(); ++k) expectBoxesEqual(da.cuts[k], db.cuts[k]);
+    EXPECT_EQ(da.model, db.model);
+    EXPECT_EQ(da.substeps, db.substeps);
+    EXPECT_EQ(da.bendingStiffness, db.bendingStiffness);
+  }
+  EXPECT_EQ(a.interaction.coupling, b.interaction.coupling);
+  EXPECT_EQ(a.interaction.influenceRatio, b.interaction.influenceRatio);
+  EXPECT_EQ(a.interaction.distanceExponent, b.interaction.distanceExponent);
+  EXPECT_EQ(a.interaction.stiffness, b.interaction.stiffness);
+  EXPECT_EQ(a.interaction.damping, b.interaction.damping);
+  EXPECT_EQ(a.interaction.shear, b.interaction.shear);
+  EXPECT_EQ(a.interaction.maxAcceleration, b.interaction.maxAcceleration);
+  EXPECT_EQ(a.interaction.cutAwareDamping, b.interaction.cutAwareDamping);
+  EXPECT_EQ(a.objectEngine.rate, b.objectEngine.rate);
+  EXPECT_EQ(a.objectEngine.ownThread, b.objectEngine.ownThread);
   EXPECT_EQ(a.calibration.mass, b.calibration.mass);
   EXPECT_EQ(a.calibration.maxExpectedSpeed, b.calibration.maxExpectedSpeed);
   EXPECT_EQ(a.calibration.speedOfSound, b.calibration.speedOfSound);

@@ -1,7 +1,10 @@
 // Object descriptions shared by the object engine tests.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -61,6 +64,16 @@ inline WorldSettings settings(Vec3 gravity = {0, 0, 0}) {
   s.defaultSpacing = 0.01f;
   s.sourceName = "scene.json";
   return s;
+}
+
+// Two worlds run alike: every particle's position, velocity and normal bit for bit, and its cuts.
+inline void expectSameBytes(const ParticleState& a, const ParticleState& b) {
+  ASSERT_EQ(a.size(), b.size());
+  const std::size_t bytes = a.size() * sizeof(Vec3);
+  EXPECT_EQ(std::memcmp(a.position.data(), b.position.data(), bytes), 0);
+  EXPECT_EQ(std::memcmp(a.velocity.data(), b.velocity.data(), bytes), 0);
+  EXPECT_EQ(std::memcmp(a.normal.data(), b.normal.data(), bytes), 0);
+  EXPECT_EQ(a.cut, b.cut);
 }
 
 inline double distance(Vec3 a, Vec3 b) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "hanging_chains.hpp"
 #include "object_scenes.hpp"
 
 namespace sph::objects {
@@ -11,32 +12,12 @@ namespace {
 
 using test::settings;
 
-constexpr double kSpacing = 0.01;
-constexpr double kStiffness = 490.0;  // N/m: the top spring of a chain strains ~1.8 %
-constexpr int kChainLength = 10;
-
-// A thin box of 2 × 10 × 2 particles: columns 1.4 s apart, beyond the 1.2 s spring reach, so it
-// is four independent vertical chains of 10 particles a spacing apart, pinned at the top.
-ObjectDesc hangingChains() {
-  ObjectDesc d = test::box({0, 0, 0}, {0.7 * kSpacing, 4.5 * kSpacing, 0.7 * kSpacing}, kSpacing,
-                           ObjectMotion::Deformable);
-  d.deformable.stiffness = kStiffness;
-  d.deformable.springReach = 1.2;
-  d.deformable.pinned.push_back({{-1, 4.4 * kSpacing, -1}, {1, 1, 1}});
-  return d;
-}
-
-const Vec3 kGravity{0, -9.81f, 0};
-
-// Particles of the chain at column (x, z) sign, from the top down.
-std::vector<std::size_t> chain(const ParticleState& p, float xSign, float zSign) {
-  std::vector<std::size_t> ids;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.position[i].x * xSign > 0 && p.position[i].z * zSign > 0) ids.push_back(i);
-  std::sort(ids.begin(), ids.end(),
-            [&](std::size_t a, std::size_t b) { return p.position[a].y > p.position[b].y; });
-  return ids;
-}
+constexpr double kSpacing = test::kChainSpacing;
+constexpr double kStiffness = test::kChainStiffness;
+using test::chain;
+using test::hangingChains;
+using test::kChainLength;
+const Vec3 kGravity = test::kChainGravity;
 
 TEST(Springs, PinnedChainHangsWithStretchEqualToTheWeightBelow) {
   ObjectWorld world({hangingChains()}, settings(kGravity));
@@ -64,56 +45,11 @@ TEST(Springs, PinnedChainHangsWithStretchEqualToTheWeightBelow) {
 }
 
 TEST(Springs, SpringBreaksPastItsStrainAndMarksTheCut) {
-  ObjectDesc d = hangingChains();
-  d.deformable.breakingStrain = 0.01;  // the top spring would settle at 1.8 %
-  ObjectWorld world({d}, settings(kGravity));
-  const double startBottom = world.info(0).centreOfMass.y;
-  for (int s = 0; s < 300; ++s) world.step(1e-3, {});
-  const ParticleState& p = world.particles();
-  EXPECT_GE(world.info(0).brokenSprings, 4u);  // at least the top spring of each chain
-  for (float xs : {-1.0f, 1.0f})
-    for (float zs : {-1.0f, 1.0f}) {
-      const std::vector<std::size_t> ids = chain(p, xs, zs);
-      EXPECT_EQ(p.cut[ids[0]], 1);
-      EXPECT_EQ(p.cut[ids[1]], 1);
-    }
-  // Torn off, the chains fall: ½ g t² = 0.44 m over 0.3 s for the free part.
-  EXPECT_LT(world.info(0).centreOfMass.y, startBottom - 0.2);
-
-  // The same chains with a strain limit above what they reach hold.
-  d.deformable.breakingStrain = 0.03;
-  ObjectWorld holding({d}, settings(kGravity));
-  for (int s = 0; s < 300; ++s) holding.step(1e-3, {});
-  EXPECT_EQ(holding.info(0).brokenSprings, 0u);
-  for (std::uint8_t c : holding.particles().cut) EXPECT_EQ(c, 0);
-  EXPECT_GT(holding.info(0).centreOfMass.y, startBottom - 0.01);
+  test::expectLinksBreakPastTheirStrainAndMarkTheCut(DeformableModel::Springs);
 }
 
 TEST(Springs, CutBoxStartsSpringsBrokenAndTheLowerPartFalls) {
-  ObjectDesc d = hangingChains();
-  // A slit between the layers at y = 0.005 and y = 0.015: the springs through it break.
-  d.deformable.cuts.push_back({{-1, 0.0099, -1}, {1, 0.0101, 1}});
-  ObjectWorld world({d}, settings(kGravity));
-  EXPECT_EQ(world.info(0).brokenSprings, 4u);
-  const ParticleState& p0 = world.particles();
-  std::size_t cut = 0;
-  for (std::size_t i = 0; i < p0.size(); ++i) {
-    const bool besideTheSlit = std::abs(std::abs(p0.position[i].y - 0.01f) - 0.005f) < 0.001f;
-    EXPECT_EQ(p0.cut[i], besideTheSlit ? 1 : 0) << "y = " << p0.position[i].y;
-    cut += p0.cut[i];
-  }
-  EXPECT_EQ(cut, 8u);
-  const std::vector<Vec3> start = p0.position;
-  for (int s = 0; s < 200; ++s) world.step(1e-3, {});
-  const ParticleState& p = world.particles();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double drop = start[i].y - p.position[i].y;
-    if (start[i].y < 0.01f) {
-      EXPECT_NEAR(drop, 0.5 * 9.81 * 0.2 * 0.2, 0.01);  // free fall
-    } else {
-      EXPECT_LT(drop, 0.005);  // still hangs
-    }
-  }
+  test::expectCutBoxStartsLinksBrokenAndTheLowerPartFalls(DeformableModel::Springs);
 }
 
 TEST(Springs, DefaultStiffnessStrainsOneSpringOnePercentUnderTheWholeWeight) {

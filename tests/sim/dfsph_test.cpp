@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "backend/cpu_parallel.hpp"
@@ -33,6 +34,57 @@ double momentumMagnitudeSum(const ParticleFrame& f, double mass, double (&total)
     sum += mass * std::sqrt(speed2);
   }
   return sum;
+}
+
+// A closed box full of water spun at 4 rad/s about its axis, gravity off: the rigid rotation is
+// divergence-free, but the walls turn the flow.
+Scene spinningBox(bool divergenceSolve) {
+  Scene s;
+  s.name = "spinning_box";
+  s.sourcePath = "spinning_box (test)";
+  s.gravity = {0, 0, 0};
+  s.fluid.spacing = 0.01;
+  s.fluid.viscosity = 0.01;
+  s.domain.box = {{-0.1, -0.1, -0.1}, {0.2, 0.2, 0.2}};
+  FluidBlock block;
+  block.box = {{0, 0, 0}, {0.1, 0.1, 0.1}};
+  block.angularVelocity = {0, 0, 4.0};
+  s.fluid.blocks.push_back(block);
+  s.walls.push_back({{{0, 0, 0}, {0.1, 0.1, 0.1}}, 2, true});
+  s.calibration.maxExpectedSpeed = 0.5;
+  // Left alone, the divergence solve does not undo the density error each step's finite
+  // length leaves.
+  s.time.maxDt = 0.001;
+  s.fluid.dfsph.divergenceSolve = divergenceSolve;
+  s.fluid.dfsph.densitySolve = false;
+  return incompressible(s);
+}
+
+// Σ m/ρ over the particles.
+double volume(const Simulation& sim) {
+  const ParticleFrame f = sim.frame(false);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < f.size(); ++i) sum += sim.calibration().mass / f.density[i];
+  return sum;
+}
+
+// The divergence-free solve alone (Bender & Koschier 2015) keeps the water's volume: the velocity
+// it leaves compresses nothing. Measured: 1.9 % lost in the first 0.1 s, where the rotation
+// first meets the walls and corners, then 0.3 % from 0.1 to 0.5 s. Without it the walls squeeze
+// the water until the run stops (past 50 % compression, at 0.05 s).
+TEST(Dfsph, TheDivergenceSolveAloneKeepsASpinningBoxOfWatersVolume) {
+  Simulation sim(spinningBox(true));
+  const double start = volume(sim);
+  sim.advanceTo(0.1);
+  const double spunUp = volume(sim);
+  sim.advanceTo(0.5);
+  const double after = volume(sim);
+  std::printf("volume %.6g, %.6g at 0.1 s (%+.2f %%), %.6g at 0.5 s (%+.2f %%)\n", start, spunUp,
+              100.0 * (spunUp / start - 1.0), after, 100.0 * (after / spunUp - 1.0));
+  EXPECT_NEAR(spunUp, start, 0.03 * start);
+  EXPECT_NEAR(after, spunUp, 0.01 * spunUp);
+  Simulation unheld(spinningBox(false));
+  EXPECT_THROW(unheld.advanceTo(0.5), SimulationFailure);
 }
 
 // Gravity off, no walls: each correction is a sum of equal and opposite pair terms.

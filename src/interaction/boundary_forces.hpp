@@ -1,0 +1,68 @@
+// Stage (boundary coupling, after the density solve): the fluid's force on each object
+// particle, the opposite of what the incompressible solver's two solves applied to the fluid
+// through it. A solve pushes fluid particle i off boundary particle k with the mirrored K_i
+// (Akinci et al. 2012): m a_ik = -2 m ρ0 ψ_k K_i ∇W_ik, and over the step K_i = p_i/ρ_i², the
+// pressure both solves gave (dfsph_solve.hpp). So the object particle takes
+//   F_k = Σ_i 2 m ρ0 ψ_k (p_i/ρ_i²) ∇W_ik,
+// summed from its own side, without atomics (each boundary particle has its own twin in
+// ObjectParticles), the same for any thread count. Adds to objects.force (xyz; w: fluid
+// particles in reach).
+#pragma once
+
+#include "fluid/kernel_dispatch.hpp"
+#include "fluid/neighbors.hpp"
+#include "fluid/particles.hpp"
+#include "interaction/object_particles.hpp"
+#include "sph/core/read_only.hpp"
+
+namespace sph::interaction {
+
+namespace detail {
+
+// A named template, not a generic lambda: nvcc's device lambdas may not sit inside one.
+template <class B, class Kernels>
+void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::Grid<B>& grid,
+                           const fluid::BoundaryParticles<B>& boundary, ObjectParticles<B>& objects,
+                           const fluid::FluidParameters& params, Kernels kernels) {
+  const GridSpec spec = grid.spec;
+  const std::uint32_t* cellStart = grid.cellStart.data();
+  const Vec4* position = fluid.position.data();
+  const float* pressure = fluid.pressure.data();
+  const float* density = fluid.density.data();
+  const Vec4* particle = boundary.position.data();  // w: ψ_k
+  const std::uint32_t* twin = boundary.id.data();   // its index in ObjectParticles
+  Vec4* force = objects.force.data();
+  const float h2 = params.h * params.h;
+  const float scale = 2.0f * params.mass * params.restDensity;
+  B::forEach(
+      boundary.count, SPH_LAMBDA(std::size_t k) {
+        const Vec4 xk = particle[k];
+        Vec3 sum{0.0f, 0.0f, 0.0f};
+        float near = 0.0f;
+        fluid::forEachNeighbor(spec, cellStart, xyz(xk), [&](std::uint32_t i) {
+          const Vec3 rik = xyz(readOnly(position + i)) - xyz(xk);
+          const float r2 = lengthSquared(rik);
+          if (r2 >= h2 || r2 <= 0.0f) return;
+          const float rho = readOnly(density + i);
+          const float stiffness = readOnly(pressure + i) / (rho * rho);
+          sum += rik * (stiffness * kernels.gradFactor(realSqrt(r2)));
+          near += 1.0f;
+        });
+        const Vec4 f = force[twin[k]];
+        force[twin[k]] = makeVec4(xyz(f) + sum * (scale * xk.w), f.w + near);
+      });
+}
+
+}  // namespace detail
+
+template <class B>
+void addBoundaryForces(const fluid::FluidParticles<B>& fluid, const fluid::Grid<B>& grid,
+                       const fluid::BoundaryParticles<B>& boundary, ObjectParticles<B>& objects,
+                       const fluid::FluidParameters& params) {
+  if (boundary.count == 0 || fluid.count == 0) return;
+  fluid::withKernels(params, [&](auto kernels) {
+    detail::addBoundaryForcesWith(fluid, grid, boundary, objects, params, kernels);
+  });
+}
+
+}  // namespace sph::interaction
