@@ -23,33 +23,47 @@ float prepareObjectParticles(ObjectParticles<B>& objects, fluid::BoundaryParticl
                              const ObjectSurface& surface, const InteractionParameters& params,
                              const fluid::FluidParameters& fluidParams, Vec3 domainMin,
                              Vec3 domainMax) {
-  const std::size_t n = surface.size();
+  // Only the particles the fluid can reach: within the domain, or a reach outside it. A piece
+  // torn off and falling away would otherwise stretch the grid over its whole fall.
+  float reach = 0.0f;
+  for (std::size_t k = 0; k < surface.size(); ++k)
+    reach = fmaxf(reach, contactReach(params, surface.position[k].w));
+  const float margin = params.boundary ? fmaxf(reach, fluidParams.h) : reach;
+  std::vector<std::uint32_t> kept;
+  for (std::size_t k = 0; k < surface.size(); ++k) {
+    const Vec3 p = xyz(surface.position[k]);
+    if (p.x >= domainMin.x - margin && p.y >= domainMin.y - margin && p.z >= domainMin.z - margin &&
+        p.x <= domainMax.x + margin && p.y <= domainMax.y + margin && p.z <= domainMax.z + margin)
+      kept.push_back(std::uint32_t(k));
+  }
+  const std::size_t n = kept.size();
   objects.count = n;
   boundary.count = 0;
+  objects.force.resize(n);
   if (n == 0) return 0.0f;
-  Vec3 lo = xyz(surface.position[0]), hi = lo;
-  float reach = 0.0f, maxSpeed2 = 0.0f;
-  for (std::size_t k = 0; k < n; ++k) {
+  Vec3 lo = xyz(surface.position[kept[0]]), hi = lo;
+  float maxSpeed2 = 0.0f;
+  for (std::uint32_t k : kept) {
     const Vec3 p = xyz(surface.position[k]);
     lo = Vec3{fminf(lo.x, p.x), fminf(lo.y, p.y), fminf(lo.z, p.z)};
     hi = Vec3{fmaxf(hi.x, p.x), fmaxf(hi.y, p.y), fmaxf(hi.z, p.z)};
-    reach = fmaxf(reach, contactReach(params, surface.position[k].w));
     const bool inDomain = p.x >= domainMin.x && p.y >= domainMin.y && p.z >= domainMin.z &&
                           p.x <= domainMax.x && p.y <= domainMax.y && p.z <= domainMax.z;
     if (inDomain) maxSpeed2 = fmaxf(maxSpeed2, lengthSquared(xyz(surface.velocity[k])));
   }
   // Boundary particles are found through this grid from the fluid, out to h.
-  objects.grid = makeGrid(lo, hi, params.boundary ? fmaxf(reach, fluidParams.h) : reach);
+  objects.grid = makeGrid(lo, hi, margin);
   const GridSpec grid = objects.grid;
   std::vector<std::uint32_t> cell(n), order(n), cellStart(grid.cellCount + 1);
   for (std::size_t k = 0; k < n; ++k)
-    cell[k] = cellIndex(grid, clampToGrid(grid, cellCoordinate(grid, xyz(surface.position[k]))));
+    cell[k] =
+        cellIndex(grid, clampToGrid(grid, cellCoordinate(grid, xyz(surface.position[kept[k]]))));
   backend::countingSort(cell.data(), n, grid.cellCount, order.data(), cellStart.data());
 
   std::vector<Vec4> position(n), velocity(n), normal(n);
   std::vector<std::uint32_t> handle(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t s = order[k];
+    const std::size_t s = kept[order[k]];
     position[k] = surface.position[s];
     velocity[k] = makeVec4(xyz(surface.velocity[s]), surface.cut[s] ? 1.0f : 0.0f);
     normal[k] = makeVec4(xyz(surface.normal[s]), float(surface.object[s]));
@@ -89,7 +103,6 @@ float prepareObjectParticles(ObjectParticles<B>& objects, fluid::BoundaryParticl
       corner = Vec4{big, big, big, 0};
   }
   B::upload(objects.bounds, bounds.data(), bounds.size());
-  objects.force.resize(n);
   return std::sqrt(maxSpeed2);
 }
 

@@ -5,7 +5,7 @@ namespace sph::objects {
 std::size_t addContactForces(const ContactCoefficients& coefficients, const ContactParticles& p,
                              float maxRadius, PointGrid& grid, std::vector<DVec3>& force) {
   const double reachMax = 2.0 * double(maxRadius);
-  grid.build(p.position, reachMax);
+  grid.build(p.position, reachMax, p.regionMin, p.regionMax);
   std::size_t touching = 0;
   for (std::size_t i = 0; i < p.position.size(); ++i) {
     // Pairs are found from a particle that can move (kinematic floors hold many particles that

@@ -17,6 +17,8 @@ struct ContactParticles {
   const std::vector<float>& radius;
   const std::vector<std::int32_t>& object;
   const std::vector<std::uint8_t>& movable;  // 0: kinematic or pinned
+  // Only particles in here touch anything (WorldSettings::regionMin, regionMax).
+  DVec3 regionMin, regionMax;
 };
 
 // Adds to `force` the contact force of every overlapping pair of particles of different objects

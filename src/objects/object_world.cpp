@@ -343,8 +343,13 @@ void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce
   for (std::size_t i = 0; i < n; ++i)
     force[i] = externalForce.empty() ? DVec3{} : toD(externalForce[i]);
   if (contactsPossible) {
-    const ContactParticles particles{position, velocity, published.radius, published.object,
-                                     movable};
+    const ContactParticles particles{position,
+                                     velocity,
+                                     published.radius,
+                                     published.object,
+                                     movable,
+                                     toD(settings.regionMin),
+                                     toD(settings.regionMax)};
     addContactForces(settings.contact, particles, maxRadius, contactGrid, force);
     if (!statics.empty())
       addStaticContactForces(settings.contact, particles, statics, settings.staticRadius,
@@ -403,7 +408,13 @@ double ObjectWorld::Impl::stableSubstep() const {
     const double dampingRate = (double(k.damping) + double(k.shear)) / lightestContactMass;
     if (dampingRate > 0.0) h = std::min(h, kStepPerDampingRate / dampingRate);
     double maxSpeed = 0.0;
-    for (const DVec3& v : velocity) maxSpeed = std::max(maxSpeed, norm(v));
+    const DVec3 lo = toD(settings.regionMin), hi = toD(settings.regionMax);
+    for (std::size_t i = 0; i < velocity.size(); ++i) {
+      const DVec3& x = position[i];
+      const bool inRegion =
+          x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z;
+      if (inRegion) maxSpeed = std::max(maxSpeed, norm(velocity[i]));
+    }
     h = std::min(h, travelTimeStep(kMaxTravelPerRadius * double(minRadius), maxSpeed));
   }
   return h;

@@ -26,6 +26,10 @@ struct WorldSettings {
   // radius that push movable particles by the same contact law and never move.
   std::vector<Vec3> staticParticles;
   float staticRadius = 0.0f;
+  // Where the objects can touch anything (the fluid's domain): a particle outside it, such as a
+  // piece torn off and falling away, bounds no substep with its speed.
+  Vec3 regionMin{-3.0e38f, -3.0e38f, -3.0e38f};
+  Vec3 regionMax{3.0e38f, 3.0e38f, 3.0e38f};
   std::string sceneFolder;  // mesh files are resolved against it
   std::string sourceName;   // the scene file, for error messages
 };

@@ -18,6 +18,9 @@ class PointGrid {
   // the points are spread so far apart that the box would need many more cells than points,
   // the cells grow (queries stay exact, only coarser).
   void build(const std::vector<DVec3>& points, double cellSize);
+  // The same over the points inside [regionMin, regionMax] only: a few points far away (a piece
+  // torn off and falling) neither coarsen the cells nor are found.
+  void build(const std::vector<DVec3>& points, double cellSize, DVec3 regionMin, DVec3 regionMax);
 
   // Calls visit(index) for every point in the cells that the ball (p, radius) touches; the
   // caller tests the distance.

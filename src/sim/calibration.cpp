@@ -116,6 +116,9 @@ objects::WorldSettings worldSettings(const Scene& scene, const Calibration& c) {
   const double spring = c.contactStiffness * std::exp(scene.interaction.distanceExponent);
   w.contact = ContactCoefficients{static_cast<float>(spring),
                                   static_cast<float>(std::sqrt(spring * c.mass)), 0.0f};
+  const AxisBox& domain = scene.domain.box;
+  w.regionMin = Vec3{float(domain.min[0]), float(domain.min[1]), float(domain.min[2])};
+  w.regionMax = Vec3{float(domain.max[0]), float(domain.max[1]), float(domain.max[2])};
   w.sourceName = scene.sourcePath;
   w.sceneFolder = std::filesystem::path(scene.sourcePath).parent_path().string();
   return w;

@@ -151,6 +151,28 @@ TEST(ObjectWorld, SubstepsResolveTheStiffestSpring) {
   EXPECT_TRUE(std::isinf(lonely.stableSubstep()));
 }
 
+// A ball falling fast far below two resting boxes: inside the region its speed bounds the
+// substep (no particle travels more than a quarter of its radius in one); past it, not.
+TEST(ObjectWorld, AParticleOutsideTheRegionBoundsNoSubstep) {
+  ObjectDesc ball = sphere({0, -5, 0}, 0.02, 0.01);
+  ball.name = "ball";
+  ball.velocity = {0, -50, 0};
+  ObjectDesc left = box({0, 0, 0}, {0.05, 0.05, 0.05}, 0.01);
+  left.name = "left";
+  ObjectDesc right = box({0.2, 0, 0}, {0.05, 0.05, 0.05}, 0.01);
+  right.name = "right";
+  const std::vector<ObjectDesc> objects = {left, right, ball};
+  WorldSettings s = settings({0, -9.81f, 0});
+  s.contact = {50.0f, 0.005f, 0.0f};
+  const ObjectWorld everywhere(objects, s);
+  s.regionMin = {-1, -1, -1};
+  s.regionMax = {1, 1, 1};
+  const ObjectWorld region(objects, s);
+  const double radius = 0.5 * 0.01;
+  EXPECT_LE(everywhere.stableSubstep(), 0.25 * radius / 50.0 * 1.000001);
+  EXPECT_GT(region.stableSubstep(), 10.0 * everywhere.stableSubstep());
+}
+
 std::vector<ObjectDesc> busyScene() {
   std::vector<ObjectDesc> objects = clampOnTube();
   ObjectDesc ball = sphere({0.025, 0.03, 0.0}, 0.008, 0.0025);
