@@ -13,6 +13,8 @@
 #include "fluid/neighbors.hpp"
 #include "fluid/particles.hpp"
 #include "interaction/object_particles.hpp"
+#include "sph/core/eos.hpp"
+#include "sph/core/momentum.hpp"
 #include "sph/core/read_only.hpp"
 
 namespace sph::interaction {
@@ -33,23 +35,25 @@ void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::G
   const std::uint32_t* twin = boundary.id.data();   // its index in ObjectParticles
   Vec4* force = objects.force.data();
   const float h2 = params.h * params.h;
-  const float scale = 2.0f * params.mass * params.restDensity;
+  const float mass = params.mass, restDensity = params.restDensity;
   B::forEach(
       boundary.count, SPH_LAMBDA(std::size_t k) {
         const Vec4 xk = particle[k];
-        Vec3 sum{0.0f, 0.0f, 0.0f};
+        const float volumeMass = restDensity * xk.w;  // ρ0 ψ_k
+        Vec3 sum{0.0f, 0.0f, 0.0f};                   // Σ_i of a_ik, the fluid's acceleration
         float near = 0.0f;
         fluid::forEachNeighbor(spec, cellStart, xyz(xk), [&](std::uint32_t i) {
           const Vec3 rik = xyz(readOnly(position + i)) - xyz(xk);
           const float r2 = lengthSquared(rik);
           if (r2 >= h2 || r2 <= 0.0f) return;
-          const float rho = readOnly(density + i);
-          const float stiffness = readOnly(pressure + i) / (rho * rho);
-          sum += rik * (stiffness * kernels.gradFactor(realSqrt(r2)));
+          const float ki =
+              pressureOverDensitySquared(readOnly(pressure + i), readOnly(density + i));
+          sum += pressureAccelerationSymmetric(volumeMass, ki, ki,
+                                               rik * kernels.gradFactor(realSqrt(r2)));
           near += 1.0f;
         });
         const Vec4 f = force[twin[k]];
-        force[twin[k]] = makeVec4(xyz(f) + sum * (scale * xk.w), f.w + near);
+        force[twin[k]] = makeVec4(xyz(f) - sum * mass, f.w + near);
       });
 }
 
