@@ -1,17 +1,66 @@
 #include "objects/object_contacts.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace sph::objects {
 
+namespace {
+
+bool inBox(const DVec3& x, const DVec3& lo, const DVec3& hi) {
+  return x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z;
+}
+
+// Marks the particles in the region that lie within `reach` of the bounding box of an object
+// other than their own. Two particles in contact are both marked; a vessel's thousands of
+// particles, of which a clamp touches a few hundred, are mostly not, and are neither sorted
+// into the grid nor searched from.
+void markNear(const ContactParticles& p, double reach, ContactSearch& s) {
+  const std::size_t n = p.position.size();
+  std::size_t objects = 0;
+  for (std::size_t i = 0; i < n; ++i) objects = std::max(objects, std::size_t(p.object[i]) + 1);
+  const double big = std::numeric_limits<double>::infinity();
+  s.boxMin.assign(objects, DVec3{big, big, big});
+  s.boxMax.assign(objects, DVec3{-big, -big, -big});
+  s.near.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const DVec3& x = p.position[i];
+    if (!inBox(x, p.regionMin, p.regionMax)) continue;
+    DVec3& lo = s.boxMin[std::size_t(p.object[i])];
+    DVec3& hi = s.boxMax[std::size_t(p.object[i])];
+    lo = {std::min(lo.x, x.x), std::min(lo.y, x.y), std::min(lo.z, x.z)};
+    hi = {std::max(hi.x, x.x), std::max(hi.y, x.y), std::max(hi.z, x.z)};
+  }
+  const DVec3 grow{reach, reach, reach};
+  for (std::size_t o = 0; o < objects; ++o) {
+    s.boxMin[o] = s.boxMin[o] - grow;
+    s.boxMax[o] = s.boxMax[o] + grow;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const DVec3& x = p.position[i];
+    // NaN positions are kept, so that a diverged run still meets its contacts and fails.
+    const bool finite = std::isfinite(x.x + x.y + x.z);
+    if (finite && !inBox(x, p.regionMin, p.regionMax)) continue;
+    for (std::size_t o = 0; o < objects && !s.near[i]; ++o)
+      s.near[i] = o != std::size_t(p.object[i]) && (!finite || inBox(x, s.boxMin[o], s.boxMax[o]));
+  }
+}
+
+}  // namespace
+
 std::size_t addContactForces(const ContactCoefficients& coefficients, const ContactParticles& p,
-                             float maxRadius, PointGrid& grid, std::vector<DVec3>& force) {
+                             float maxRadius, ContactSearch& search, std::vector<DVec3>& force) {
   const double reachMax = 2.0 * double(maxRadius);
-  grid.build(p.position, reachMax, p.regionMin, p.regionMax);
+  markNear(p, reachMax, search);
+  PointGrid& grid = search.grid;
+  grid.build(p.position, reachMax, search.near);
   std::size_t touching = 0;
   for (std::size_t i = 0; i < p.position.size(); ++i) {
     // Pairs are found from a particle that can move (kinematic floors hold many particles that
     // need no search); each pair once: from the lower index when both can move. The order is
     // fixed, so the sums are the same on every run.
-    if (!p.movable[i]) continue;
+    if (!p.movable[i] || !search.near[i]) continue;
     grid.forEachCandidate(p.position[i], reachMax, [&](std::uint32_t j) {
       if (p.object[j] == p.object[i] || (p.movable[j] && j <= i)) return;
       const float reach = p.radius[i] + p.radius[j];

@@ -21,11 +21,18 @@ struct ContactParticles {
   DVec3 regionMin, regionMax;
 };
 
+// What the search between objects keeps from one substep to the next, to allocate nothing.
+struct ContactSearch {
+  PointGrid grid;
+  std::vector<std::uint8_t> near;     // by particle: within reach of another object's box
+  std::vector<DVec3> boxMin, boxMax;  // by object
+};
+
 // Adds to `force` the contact force of every overlapping pair of particles of different objects
 // of which at least one can move: equal and opposite, full spring, damped. Returns the number
 // of touching pairs.
 std::size_t addContactForces(const ContactCoefficients& coefficients, const ContactParticles& p,
-                             float maxRadius, PointGrid& grid, std::vector<DVec3>& force);
+                             float maxRadius, ContactSearch& search, std::vector<DVec3>& force);
 
 // Adds to `force` the contact force of the static particles (in `staticGrid`, all of radius
 // `staticRadius`) on every movable particle touching one. Returns the number of touching pairs.

@@ -121,7 +121,7 @@ struct ObjectWorld::Impl {
   double lightestContactMass = std::numeric_limits<double>::infinity();
   int xpbdSubsteps = 0;  // the most any XPBD deformable asks for per step
   float minRadius = std::numeric_limits<float>::infinity(), maxRadius = 0.0f;
-  PointGrid contactGrid;
+  ContactSearch contactSearch;
   std::vector<DVec3> statics;  // settings.staticParticles
   PointGrid staticGrid;
 
@@ -350,7 +350,7 @@ void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce
                                      movable,
                                      toD(settings.regionMin),
                                      toD(settings.regionMax)};
-    addContactForces(settings.contact, particles, maxRadius, contactGrid, force);
+    addContactForces(settings.contact, particles, maxRadius, contactSearch, force);
     if (!statics.empty())
       addStaticContactForces(settings.contact, particles, statics, settings.staticRadius,
                              staticGrid, force);

@@ -11,17 +11,28 @@ void PointGrid::build(const std::vector<DVec3>& points, double cellSize) {
 
 void PointGrid::build(const std::vector<DVec3>& points, double cellSize, DVec3 regionMin,
                       DVec3 regionMax) {
-  sorted_.clear();
-  cellStart_.clear();
   // NaN positions count as inside, so that a diverged run still lands in one cell.
-  auto inside = [&](const DVec3& p) {
+  buildKept(points, cellSize, [&](std::size_t i) {
+    const DVec3& p = points[i];
     return !(p.x < regionMin.x || p.y < regionMin.y || p.z < regionMin.z || p.x > regionMax.x ||
              p.y > regionMax.y || p.z > regionMax.z);
-  };
+  });
+}
+
+void PointGrid::build(const std::vector<DVec3>& points, double cellSize,
+                      const std::vector<std::uint8_t>& keep) {
+  buildKept(points, cellSize, [&](std::size_t i) { return keep[i] != 0; });
+}
+
+template <class Keep>
+void PointGrid::buildKept(const std::vector<DVec3>& points, double cellSize, Keep inside) {
+  sorted_.clear();
+  cellStart_.clear();
   std::size_t kept = 0;
   DVec3 lo{0, 0, 0}, hi{0, 0, 0};
-  for (const DVec3& p : points) {
-    if (!inside(p)) continue;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!inside(i)) continue;
+    const DVec3& p = points[i];
     if (kept++ == 0) lo = hi = p;
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
@@ -49,7 +60,7 @@ void PointGrid::build(const std::vector<DVec3>& points, double cellSize, DVec3 r
   std::vector<std::uint32_t> cellOf(points.size(), kLeftOut);
   cellStart_.assign(cellCount + 1, 0);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (!inside(points[i])) continue;
+    if (!inside(i)) continue;
     const DVec3 c = (points[i] - origin_) * inverseCell_;
     const int x = axisCell(c.x, dims_[0]);
     const int y = axisCell(c.y, dims_[1]);

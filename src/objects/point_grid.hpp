@@ -21,6 +21,9 @@ class PointGrid {
   // The same over the points inside [regionMin, regionMax] only: a few points far away (a piece
   // torn off and falling) neither coarsen the cells nor are found.
   void build(const std::vector<DVec3>& points, double cellSize, DVec3 regionMin, DVec3 regionMax);
+  // The same over the points whose `keep` entry is not 0.
+  void build(const std::vector<DVec3>& points, double cellSize,
+             const std::vector<std::uint8_t>& keep);
 
   // Calls visit(index) for every point in the cells that the ball (p, radius) touches; the
   // caller tests the distance.
@@ -45,6 +48,8 @@ class PointGrid {
   }
 
  private:
+  template <class Keep>
+  void buildKept(const std::vector<DVec3>& points, double cellSize, Keep inside);
   std::size_t cellIndex(int x, int y, int z) const {
     return std::size_t(x) + std::size_t(dims_[0]) * (std::size_t(y) + std::size_t(dims_[1]) * z);
   }
