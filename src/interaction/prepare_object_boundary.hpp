@@ -15,15 +15,15 @@
 #include <cstdint>
 #include <vector>
 
-#include "fluid/kernel_dispatch.hpp"
-#include "fluid/neighbors.hpp"
 #include "fluid/particles.hpp"
 #include "fluid/prepare_boundary.hpp"
 #include "interaction/object_particles.hpp"
+#include "interaction/object_volumes.hpp"
 
 namespace sph::interaction {
 
-// position and velocity in ObjectParticles order (w of the position: the radius).
+// position and velocity in ObjectParticles order (w of the position: the radius), ψ_k from
+// object_volumes.hpp.
 template <class B>
 void prepareObjectBoundary(fluid::BoundaryParticles<B>& boundary, const std::vector<Vec4>& position,
                            const std::vector<Vec4>& velocity,
@@ -33,21 +33,9 @@ void prepareObjectBoundary(fluid::BoundaryParticles<B>& boundary, const std::vec
   boundary.count = n;
   if (n == 0) return;
   boundary.grid = grid;
-  std::vector<Vec4> withVolume(n);
+  const std::vector<Vec4> withVolume = withObjectVolumes(position, cellStart, grid, params);
   std::vector<std::uint32_t> twin(n);
-  const float h2 = params.h * params.h;
-  fluid::withKernels(params, [&](auto kernels) {
-    for (std::size_t k = 0; k < n; ++k) {
-      const Vec3 xk = xyz(position[k]);
-      float density = 0.0f;  // Σ_l W_kl, itself included
-      fluid::forEachNeighbor(grid, cellStart.data(), xk, [&](std::uint32_t l) {
-        const float r2 = lengthSquared(xk - xyz(position[l]));
-        if (r2 < h2) density += kernels.W(r2);
-      });
-      withVolume[k] = makeVec4(xk, 1.0f / density);
-      twin[k] = std::uint32_t(k);
-    }
-  });
+  for (std::size_t k = 0; k < n; ++k) twin[k] = std::uint32_t(k);
   B::upload(boundary.position, withVolume.data(), n);
   B::upload(boundary.id, twin.data(), n);
   B::upload(boundary.cellStart, cellStart.data(), cellStart.size());
