@@ -1,5 +1,7 @@
 #include "report.hpp"
 
+#include <string>
+
 #include "backend/cpu_parallel.hpp"
 #include "io/frame_writer.hpp"
 
@@ -57,6 +59,17 @@ void printCalibration(std::FILE* out, const Simulation& sim) {
     std::fprintf(out, "  solver               weakly compressible (wcsph)\n");
     std::fprintf(out, "  first time step      %.6g s (CFL %.3g; adaptive unless time.fixed_dt)\n",
                  c.initialDt, s.time.cfl);
+  }
+  if (!s.probes.empty()) {
+    std::string names;
+    for (const ProbeDesc& p : s.probes) {
+      const char* kind = p.kind == ProbeKind::Point   ? "point"
+                         : p.kind == ProbeKind::Level ? "level"
+                                                      : "force";
+      names += (names.empty() ? "" : ", ") + p.name + " (" + kind + ")";
+    }
+    std::fprintf(out, "  probes               %zu at %g per second: %s\n", s.probes.size(),
+                 s.output.probeRate, names.c_str());
   }
   if (s.objects.empty()) return;
   std::fprintf(out, "  objects              %zu, %llu particles\n", s.objects.size(),

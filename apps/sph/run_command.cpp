@@ -91,6 +91,7 @@ int runCommand(const RunOptions& options) {
     const std::uint64_t steps = sim.stepCount() - lastFrameSteps;
     const double wallMsPerStep = steps ? 1000.0 * secondsSince(lastFrameWall) / double(steps) : 0.0;
     output.writeFrame(sim.capture(), wallMsPerStep);  // objects move: they are in every frame
+    output.writeProbes(sim.probeColumns(), sim.takeProbeRows());
     lastFrameWall = Clock::now();
     lastFrameSteps = sim.stepCount();
   };
@@ -108,6 +109,7 @@ int runCommand(const RunOptions& options) {
     }
   } catch (const SimulationFailure& failure) {
     output.finish();  // the frames before the failure are kept
+    output.writeProbes(sim.probeColumns(), sim.takeProbeRows());
     progress.finish(sim.time(), sim.stepCount());
     record.wallSeconds = secondsSince(start);
     record.failure = {{"message", failure.what()},
@@ -142,6 +144,9 @@ int runCommand(const RunOptions& options) {
       std::printf("open %s/frames.pvd in ParaView; statistics in %s/stats.csv\n",
                   output.dir().c_str(), output.dir().c_str());
     }
+    if (!sim.probeColumns().empty())
+      std::printf("probes at %g per second in %s/probes.csv\n", scene.output.probeRate,
+                  output.dir().c_str());
   }
   if (options.render) {
     RenderOptions render;

@@ -12,9 +12,9 @@ namespace fs = std::filesystem;
 namespace {
 
 // The files a run writes; --force removes these and nothing else.
-const char* const kRunFiles[] = {"frames",       "frames.pvd",   "stats.csv",
-                                 "summary.json", "boundary.vtp", "boundary.ply",
-                                 "boundary.csv", "images",       "video.mp4"};
+const char* const kRunFiles[] = {"frames",       "frames.pvd",   "stats.csv",    "probes.csv",
+                                 "summary.json", "boundary.vtp", "boundary.ply", "boundary.csv",
+                                 "images",       "video.mp4"};
 
 bool holdsEarlierRun(const fs::path& dir) {
   for (const char* name : kRunFiles)
@@ -69,6 +69,13 @@ void RunOutput::finish() {
   std::unique_lock<std::mutex> lock(mutex_);
   changed_.wait(lock, [&] { return (queue_.empty() && !writing_) || error_; });
   if (error_) std::rethrow_exception(error_);
+}
+
+void RunOutput::writeProbes(const std::vector<std::string>& columns,
+                            const std::vector<ProbeRow>& rows) {
+  if (columns.empty()) return;
+  if (!probes_) probes_.emplace(dir_ / "probes.csv", columns);
+  probes_->append(rows);
 }
 
 int RunOutput::framesWritten() const {

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "io/probes_writer.hpp"
 #include "io/pvd_series.hpp"
 #include "io/stats_writer.hpp"
 #include "sph/frame.hpp"
@@ -39,6 +40,9 @@ class RunOutput {
   void writeFrame(FrameCapture capture, double wallMsPerStep);
   // Waits until every queued frame is written; throws the first writing error.
   void finish();
+  // The probes' rows into DIR/probes.csv, made with its header on the first call (none
+  // without probes).
+  void writeProbes(const std::vector<std::string>& columns, const std::vector<ProbeRow>& rows);
   const std::filesystem::path& dir() const { return dir_; }
   int framesWritten() const;
 
@@ -54,6 +58,7 @@ class RunOutput {
   FrameFormat format_;
   std::optional<io::PvdSeries> series_;
   std::optional<io::StatsWriter> stats_;
+  std::optional<io::ProbesWriter> probes_;
   int frames_ = 0;
 
   // The writer thread and what it shares with the simulation's.

@@ -108,6 +108,23 @@ struct TimeDesc {
 struct OutputDesc {
   double fps = 30.0;
   FrameFormat format = FrameFormat::Vtp;
+  double probeRate = 1000.0;  // probe samples per simulated second, independent of frames
+};
+
+// A probe (scene "probes"): what it reads is sampled at output.probe_rate into probes.csv.
+enum class ProbeKind {
+  Point,  // pressure, density and velocity at `position` (core/probe.hpp)
+  Level,  // the free surface along the line `from` → `to`: its distance from `from`
+  Force   // the fluid's force on `object`
+};
+
+struct ProbeDesc {
+  std::string name;
+  ProbeKind kind = ProbeKind::Point;
+  Vec3d position{0, 0, 0};  // Point
+  Vec3d from{0, 0, 0};      // Level
+  Vec3d to{0, 0, 0};        // Level
+  std::string object;       // Force: an object's name
 };
 
 struct FailureDesc {
@@ -215,6 +232,7 @@ struct Scene {
   CalibrationDesc calibration;
   TimeDesc time;
   OutputDesc output;
+  std::vector<ProbeDesc> probes;
   FailureDesc failure;
 };
 

@@ -61,9 +61,10 @@ struct StepProfile {
   double densitySolve = 0.0;  // DFSPH
   double integrate = 0.0;
   double objects = 0.0;  // handing the step to the object engine (its own thread by default)
+  double probes = 0.0;   // sampling the scene's probes
   double total() const {
     return buildGrid + densityPressure + divergenceSolve + forces + interaction + timeStep +
-           densitySolve + integrate + objects;
+           densitySolve + integrate + objects + probes;
   }
 };
 
@@ -173,6 +174,14 @@ class Simulation {
   std::vector<float> leakPositions() const;
   // The ids of the fluid particles outside their container now.
   std::vector<std::uint32_t> leakedIds() const;
+
+  // The probes' columns, "<probe>_<quantity>_<unit>": pressure_Pa, density_kg_m3, vx_m_s ..
+  // for a point, level_m for a level gauge, fx_N .. for a force. Empty without probes.
+  const std::vector<std::string>& probeColumns() const;
+  // The probes' rows since the last call, at the probe rate: each interpolated linearly in time
+  // between the states of the steps around it (a frame's state: the positions a step ended at,
+  // the densities and pressures it computed).
+  std::vector<ProbeRow> takeProbeRows();
 
   // Statistics of the current state; wallMsPerStep is left 0 for the caller to fill.
   FrameStats stats() const;

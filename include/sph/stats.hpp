@@ -42,4 +42,11 @@ struct FrameStats {
   double wallMsPerStep = 0.0;  // mean over the steps since the previous row
 };
 
+// One row of the scene's probes (scene "probes"): the time k / output.probe_rate, and a value
+// for each of Simulation::probeColumns(). A point probe in the air reads NaN.
+struct ProbeRow {
+  double time = 0.0;
+  std::vector<double> values;
+};
+
 }  // namespace sph

@@ -9,3 +9,4 @@
 #include "fluid/integrate.hpp"
 #include "fluid/measure_step.hpp"
 #include "fluid/prepare_boundary.hpp"
+#include "fluid/sample_points.hpp"

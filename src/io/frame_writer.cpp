@@ -10,17 +10,12 @@
 #include <system_error>
 
 #include "io/csv_frame_writer.hpp"
+#include "io/file_error.hpp"
 #include "io/ply_writer.hpp"
 #include "io/vtp_writer.hpp"
 
 namespace sph::io {
 namespace {
-
-[[noreturn]] void throwFileError(const char* action, const std::filesystem::path& path, int error) {
-  // errno can be 0 when the stream failed without a system call (e.g. a bad_alloc inside it).
-  const char* reason = error != 0 ? std::strerror(error) : "unknown error";
-  throw std::runtime_error(std::string("cannot ") + action + " '" + path.string() + "': " + reason);
-}
 
 void requireLength(std::size_t actual, std::size_t expected, const char* name) {
   if (actual != expected) {

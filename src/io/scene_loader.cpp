@@ -203,6 +203,56 @@ void checkObjectNames(const ReadContext& context, const Scene& scene) {
   }
 }
 
+void checkPointInDomain(const ReadContext& context, const Vec3d& x, const std::string& key,
+                        const AxisBox& domain) {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (x[axis] < domain.min[axis] || x[axis] > domain.max[axis])
+      context.fail(key,
+                   "expected a point inside the domain box " + formatVec3(domain.min) + " to " +
+                       formatVec3(domain.max) + ", got " + formatVec3(x),
+                   {"domain.min", "domain.max"});
+  }
+}
+
+// Probes have names of their own (they head probes.csv's columns), read inside the domain, and
+// a force probe names an object.
+void checkProbes(const ReadContext& context, const Scene& scene) {
+  for (std::size_t i = 0; i < scene.probes.size(); ++i) {
+    const ProbeDesc& p = scene.probes[i];
+    const std::string path = joinIndex("probes", i);
+    if (p.name.empty() || p.name.find_first_of(",\"\n") != std::string::npos)
+      context.fail(path + ".name",
+                   "expected a name without commas or quotes, got \"" + p.name + "\"");
+    for (std::size_t j = 0; j < i; ++j) {
+      if (scene.probes[j].name == p.name)
+        context.fail(path + ".name", "expected a name no other probe has, got \"" + p.name +
+                                         "\" (also probes[" + std::to_string(j) + "])");
+    }
+    if (p.kind == ProbeKind::Point)
+      checkPointInDomain(context, p.position, path + ".position", scene.domain.box);
+    if (p.kind == ProbeKind::Level) {
+      checkPointInDomain(context, p.from, path + ".from", scene.domain.box);
+      checkPointInDomain(context, p.to, path + ".to", scene.domain.box);
+      if (p.from[0] == p.to[0] && p.from[1] == p.to[1] && p.from[2] == p.to[2])
+        context.fail(path + ".to",
+                     "expected a point apart from " + path + ".from " + formatVec3(p.from) +
+                         ", got the same point",
+                     {path + ".from"});
+    }
+    if (p.kind == ProbeKind::Force) {
+      bool found = false;
+      for (const ObjectDesc& o : scene.objects) found = found || o.name == p.object;
+      if (!found) {
+        std::string names;
+        for (const ObjectDesc& o : scene.objects) names += (names.empty() ? "" : ", ") + o.name;
+        context.fail(path + ".object", "expected the name of an object (" +
+                                           (names.empty() ? "none" : names) + "), got \"" +
+                                           p.object + "\"");
+      }
+    }
+  }
+}
+
 // Boundary coupling gives the objects the incompressible solver's pressure: there is none
 // without it.
 void checkCoupling(const ReadContext& context, const Scene& scene) {
@@ -237,7 +287,26 @@ OutputDesc readOutput(const ObjectReader& in) {
   OutputDesc output;
   output.fps = in.number("fps", output.fps, kPositive);
   output.format = in.choice("format", output.format, kFormatNames);
+  output.probeRate = in.number("probe_rate", output.probeRate, kPositive);
   return output;
+}
+
+std::vector<ProbeDesc> readProbes(const ObjectReader& root) {
+  std::vector<ProbeDesc> probes;
+  for (const ObjectReader& in : root.objectArray("probes", /*required=*/false,
+                                                 /*nonEmpty=*/false)) {
+    ProbeDesc p;
+    p.name = in.string("name", "probe" + std::to_string(probes.size()));
+    p.kind = in.choice("type", p.kind, kProbeKindNames);
+    if (p.kind == ProbeKind::Point) p.position = in.requiredVec3("position");
+    if (p.kind == ProbeKind::Level) {
+      p.from = in.requiredVec3("from");
+      p.to = in.requiredVec3("to");
+    }
+    if (p.kind == ProbeKind::Force) p.object = in.string("object", "");
+    probes.push_back(std::move(p));
+  }
+  return probes;
 }
 
 FailureDesc readFailure(const ObjectReader& in) {
@@ -326,10 +395,12 @@ Scene parseScene(const json& document, const std::string& sourceName,
   scene.calibration = readCalibration(root.object("calibration"));
   scene.time = readTime(root.object("time"));
   scene.output = readOutput(root.object("output"));
+  scene.probes = readProbes(root);
   scene.failure = readFailure(root.object("failure"));
   checkGeometry(context, scene);
   checkObjectNames(context, scene);
   checkCoupling(context, scene);
+  checkProbes(context, scene);
   return scene;
 }
 

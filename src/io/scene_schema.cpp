@@ -66,7 +66,9 @@ KeySchema buildSchema() {
                               value("stiffness")}),
        object("time", {value("duration"), value("cfl"), value("force_factor"),
                        value("viscous_factor"), value("max_dt"), value("fixed_dt")}),
-       object("output", {value("fps"), value("format")}),
+       object("output", {value("fps"), value("format"), value("probe_rate")}),
+       arrayOf("probes", {value("name"), value("type"), vec3("position"), vec3("from"), vec3("to"),
+                          value("object")}),
        object("failure", {value("max_density_error")})});
 }
 

@@ -75,6 +75,9 @@ inline constexpr NamedValue<FrameFormat> kFormatNames[] = {{"vtp", FrameFormat::
 enum class WallType { Tank };
 inline constexpr NamedValue<WallType> kWallTypeNames[] = {{"tank", WallType::Tank}};
 
+inline constexpr NamedValue<ProbeKind> kProbeKindNames[] = {
+    {"point", ProbeKind::Point}, {"level", ProbeKind::Level}, {"force", ProbeKind::Force}};
+
 inline constexpr NamedValue<ObjectMotion> kMotionNames[] = {
     {"rigid", ObjectMotion::Rigid},
     {"deformable", ObjectMotion::Deformable},

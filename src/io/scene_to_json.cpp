@@ -136,6 +136,16 @@ json interactionToJson(const InteractionDesc& i) {
           {"cut_aware_damping", i.cutAwareDamping}};
 }
 
+// Every key, also those its type does not read (as for an object's shape).
+json probeToJson(const ProbeDesc& p) {
+  return {{"name", p.name},
+          {"type", nameOf(p.kind, kProbeKindNames)},
+          {"position", toJson(p.position)},
+          {"from", toJson(p.from)},
+          {"to", toJson(p.to)},
+          {"object", p.object}};
+}
+
 }  // namespace
 
 json sceneToJson(const Scene& scene) {
@@ -170,7 +180,15 @@ json sceneToJson(const Scene& scene) {
         {"max_dt", time.maxDt},
         {"fixed_dt", toJson(time.fixedDt)}}},
       {"output",
-       {{"fps", scene.output.fps}, {"format", nameOf(scene.output.format, kFormatNames)}}},
+       {{"fps", scene.output.fps},
+        {"format", nameOf(scene.output.format, kFormatNames)},
+        {"probe_rate", scene.output.probeRate}}},
+      {"probes",
+       [&] {
+         json out = json::array();
+         for (const ProbeDesc& p : scene.probes) out.push_back(probeToJson(p));
+         return out;
+       }()},
       {"failure", {{"max_density_error", scene.failure.maxDensityError}}},
   };
 }

@@ -2,27 +2,18 @@
 
 #include <cerrno>
 #include <cinttypes>
-#include <cstring>
-#include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "io/file_error.hpp"
+
 namespace sph::io {
-namespace {
-
-[[noreturn]] void throwFileError(const char* action, const std::filesystem::path& path) {
-  const int error = errno;
-  throw std::runtime_error(std::string("cannot ") + action + " '" + path.string() +
-                           "': " + (error != 0 ? std::strerror(error) : "unknown error"));
-}
-
-}  // namespace
 
 StatsWriter::StatsWriter(std::filesystem::path csvFile, std::vector<std::string> objectNames)
     : path_(std::move(csvFile)), objectCount_(objectNames.size()) {
   errno = 0;
   file_.reset(std::fopen(path_.string().c_str(), "w"));
-  if (!file_) throwFileError("open", path_);
+  if (!file_) throwFileError("open", path_, errno);
   std::string header =
       "time,steps,dt,fluid_count,boundary_count,kinetic_energy,mean_density,"
       "max_density_error,max_speed,surface_count,leaked_count,removed_count,"
@@ -34,7 +25,7 @@ StatsWriter::StatsWriter(std::filesystem::path csvFile, std::vector<std::string>
   }
   header += "\n";
   errno = 0;
-  if (std::fputs(header.c_str(), file_.get()) < 0) throwFileError("write", path_);
+  if (std::fputs(header.c_str(), file_.get()) < 0) throwFileError("write", path_, errno);
   flushOrThrow();
 }
 
@@ -53,7 +44,7 @@ void StatsWriter::append(const FrameStats& s) {
       s.contactPairs, s.averageDensityError,
       perStep(s.densityIterations - previous_.densityIterations),
       perStep(s.divergenceIterations - previous_.divergenceIterations), s.unconvergedSolves);
-  if (written < 0) throwFileError("write", path_);
+  if (written < 0) throwFileError("write", path_, errno);
   for (std::size_t o = 0; o < objectCount_; ++o) {
     // A row without the objects (a caller that does not track them) leaves their cells empty.
     const bool known = o < s.objects.size();
@@ -61,10 +52,10 @@ void StatsWriter::append(const FrameStats& s) {
     for (double v : {object.fluidForce[0], object.fluidForce[1], object.fluidForce[2],
                      object.centreOfMass[0], object.centreOfMass[1], object.centreOfMass[2]}) {
       if ((known ? std::fprintf(file_.get(), ",%.9g", v) : std::fputs(",", file_.get())) < 0)
-        throwFileError("write", path_);
+        throwFileError("write", path_, errno);
     }
   }
-  if (std::fputs("\n", file_.get()) < 0) throwFileError("write", path_);
+  if (std::fputs("\n", file_.get()) < 0) throwFileError("write", path_, errno);
   flushOrThrow();
   previous_ = s;
 }
@@ -73,7 +64,7 @@ void StatsWriter::append(const FrameStats& s) {
 // contract asks; surviving a power cut would need fsync per row, too slow for no real need.
 void StatsWriter::flushOrThrow() {
   errno = 0;
-  if (std::fflush(file_.get()) != 0) throwFileError("write", path_);
+  if (std::fflush(file_.get()) != 0) throwFileError("write", path_, errno);
 }
 
 }  // namespace sph::io

@@ -159,6 +159,17 @@ class EngineImpl final : public FluidEngine {
     B::download(boundary_.position, w.position.data(), boundary_.count);
     return w;
   }
+  std::vector<PointSums> samplePoints(const std::vector<Vec3>& points) override {
+    const std::size_t n = points.size();
+    std::vector<Vec4> at(n);
+    for (std::size_t k = 0; k < n; ++k) at[k] = makeVec4(points[k]);
+    B::upload(probePoints_, at.data(), n);
+    probeSums_.resize(n);
+    fluid::samplePoints(fluid_, grid_, params_, probePoints_.data(), n, probeSums_.data());
+    std::vector<PointSums> out(n);
+    B::download(probeSums_, out.data(), n);
+    return out;
+  }
 
   void writeForDrawing(const FluidDrawTarget& target, float surfaceThreshold) const override {
     fluid::writeForDrawing(fluid_, reinterpret_cast<Vec4*>(target.position), target.value,
@@ -186,6 +197,8 @@ class EngineImpl final : public FluidEngine {
   interaction::ObjectParticles<B> objects_;
   fluid::BoundaryParticles<B> objectBoundary_;  // the objects', with boundary coupling
   interaction::ContainmentState<B> containment_;
+  typename B::template Buffer<Vec4> probePoints_;
+  typename B::template Buffer<PointSums> probeSums_;
 };
 
 }  // namespace sph::sim

@@ -11,6 +11,7 @@
 #include "fluid/measure_step.hpp"
 #include "fluid/parameters.hpp"
 #include "interaction/object_particles.hpp"
+#include "sph/core/probe.hpp"
 #include "sph/core/vec.hpp"
 #include "sph/fluid_draw.hpp"
 #include "sph/object_exchange.hpp"
@@ -97,6 +98,8 @@ class FluidEngine {
   // them to pinned host memory while the next steps run; the CPU copies at once.
   virtual std::unique_ptr<PendingParticles> beginDownload() const = 0;
   virtual HostWalls downloadWalls() const = 0;
+  // The fluid's sums at each point (the probes, core/probe.hpp), as a frame taken now shows it.
+  virtual std::vector<PointSums> samplePoints(const std::vector<Vec3>& points) = 0;
   // The fluid into arrays in this backend's memory, for a renderer (target checked by the
   // caller). On the GPU the writes are queued on the default stream.
   virtual void writeForDrawing(const FluidDrawTarget& target, float surfaceThreshold) const = 0;

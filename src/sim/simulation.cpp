@@ -35,6 +35,7 @@ void Simulation::step(double until) {
   profile.objects = timedMs([&] { s.advanceObjects(); });
   s.time = (s.dt == until - s.time) ? until : s.time + s.dt;
   ++s.steps;
+  profile.probes = timedMs([&] { s.sampleProbes(); });
 }
 
 void Simulation::setExternalAcceleration(const std::vector<float>& byId) {
@@ -95,6 +96,12 @@ SolverStats Simulation::lastSolve() const {
   out.divergenceError = s.divergenceReport.averageError;
   out.converged = s.densityReport.converged && s.divergenceReport.converged;
   return out;
+}
+const std::vector<std::string>& Simulation::probeColumns() const {
+  return impl_->probes->columns();
+}
+std::vector<ProbeRow> Simulation::takeProbeRows() {
+  return impl_->probes->take();
 }
 const StepProfile& Simulation::lastProfile() const {
   return impl_->profile;

@@ -15,6 +15,7 @@
 #include "sim/fluid_engine.hpp"
 #include "sim/object_clearance.hpp"
 #include "sim/object_runner.hpp"
+#include "sim/probes.hpp"
 #include "sim/sampling.hpp"
 #include "sph/core/kernels.hpp"
 #include "sph/core/time_step.hpp"
@@ -64,6 +65,7 @@ struct Simulation::Impl {
   std::uint64_t contactPairs = 0;
   sim::HostObjectForces objectForces;
   std::vector<Vec3> fluidForceOnObject;  // by object, last step
+  std::unique_ptr<sim::ProbeSampler> probes;
   // The incompressible solver's last solves, and its counts since the start.
   fluid::SolverReport divergenceReport;
   fluid::SolverReport densityReport;
@@ -109,6 +111,14 @@ struct Simulation::Impl {
     // Density and pressure of the initial state, so stats and frame 0 are meaningful.
     removed += engine->buildGrid();
     engine->computeDensityAndPressure();
+    probes = std::make_unique<sim::ProbeSampler>(scene, scene.fluid.spacing);
+    sampleProbes();
+  }
+
+  // The probes read the state as it is now (sim/probes.hpp).
+  void sampleProbes() {
+    if (probes->empty()) return;
+    probes->record(time, engine->samplePoints(probes->points()), fluidForceOnObject);
   }
 
   // Contacts are found through the fluid's grid (cell edge h) from the object particles.

@@ -67,6 +67,32 @@ TEST_F(Cli, RunWritesFramesStatsAndSummary) {
   EXPECT_EQ(summary["scene"]["fluid"]["spacing"], 0.01);
 }
 
+TEST_F(Cli, RunWritesTheProbesAtTheirRate) {
+  const fs::path scene = dir_ / "probed.json";
+  std::ofstream(scene) << R"({
+    "name": "probed",
+    "domain": {"min": [0, 0, 0], "max": [0.1, 0.1, 0.1], "damped_box": true},
+    "fluid": {"spacing": 0.01, "blocks": [{"min": [0.02, 0.0, 0.02], "max": [0.08, 0.06, 0.08]}]},
+    "time": {"duration": 0.02},
+    "output": {"fps": 100, "format": "none", "probe_rate": 500},
+    "probes": [{"name": "p", "type": "point", "position": [0.05, 0.03, 0.05]},
+               {"name": "g", "type": "level", "from": [0.05, 0, 0.05], "to": [0.05, 0.1, 0.05]}]
+  })";
+  const fs::path out = dir_ / "run";
+  const Result r = runSph("run " + scene.string() + " --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("probes at 500 per second in"), std::string::npos) << r.output;
+  // A header and a row every 2 ms from 0 to 0.02 s.
+  const std::string probes = readFile(out / "probes.csv");
+  EXPECT_EQ(std::count(probes.begin(), probes.end(), '\n'), 12);
+  EXPECT_EQ(probes.rfind("time_s,p_pressure_Pa,p_density_kg_m3,p_vx_m_s,p_vy_m_s,p_vz_m_s,"
+                         "g_level_m\n0,",
+                         0),
+            0u)
+      << probes;
+  EXPECT_NE(probes.find("\n0.02,"), std::string::npos) << probes;
+}
+
 TEST_F(Cli, FormatsAndOverridesFromTheCommandLine) {
   const fs::path out = dir_ / "ply";
   const Result r = runSph("run " + scene_.string() + " --out " + out.string() +

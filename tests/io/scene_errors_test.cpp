@@ -181,7 +181,9 @@ TEST(SceneErrors, UnknownKeySuggestsTheNearestKey) {
 
 TEST(SceneErrors, UnknownKeyFarFromAnyListsTheKnownKeys) {
   const std::string message = parseError(with(minimalSceneJson(), "/output/colour", "red"));
-  EXPECT_EQ(message, "scenes/x.json: unknown key output.colour (keys of output are: fps, format)");
+  EXPECT_EQ(
+      message,
+      "scenes/x.json: unknown key output.colour (keys of output are: fps, format, probe_rate)");
   const std::string top = parseError(with(minimalSceneJson(), "/solver", "pcisph"));
   expectContains(top, {"unknown key solver (top-level keys are: name, description, domain"});
   EXPECT_EQ(top.find("did you mean"), std::string::npos) << top;
@@ -211,6 +213,33 @@ TEST(SceneErrors, BoundaryCouplingNeedsTheIncompressibleSolver) {
   EXPECT_EQ(parseError(with(completeSceneJson(), "/fluid/solver", "wcsph")),
             "scenes/x.json: interaction.coupling: expected \"contact\" with fluid.solver "
             "\"wcsph\" (\"boundary\" needs fluid.solver \"dfsph\"), got \"boundary\"");
+}
+
+// Probes head probes.csv's columns by name, read inside the domain, and a force probe needs an
+// object.
+TEST(SceneErrors, BadProbesNameTheKey) {
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/probes/0/type", "gauge")),
+            "scenes/x.json: probes[0].type: expected one of \"point\", \"level\", \"force\", "
+            "got \"gauge\"");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/probes/0/position", {2.0, 0.05, 0})),
+            "scenes/x.json: probes[0].position: expected a point inside the domain box "
+            "[-0.1, 0, -0.2] to [1.5, 1.2, 0.3], got [2, 0.05, 0]");
+  EXPECT_EQ(parseError(without(completeSceneJson(), "/probes/0/position")),
+            "scenes/x.json: probes[0].position: required key is missing");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/probes/1/to", {0.5, 0, 0})),
+            "scenes/x.json: probes[1].to: expected a point apart from probes[1].from [0.5, 0, 0], "
+            "got the same point");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/probes/2/object", "clamp")),
+            "scenes/x.json: probes[2].object: expected the name of an object (vessel), got "
+            "\"clamp\"");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/probes/1/name", "sensor")),
+            "scenes/x.json: probes[1].name: expected a name no other probe has, got \"sensor\" "
+            "(also probes[0])");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/probes/0/name", "a,b")),
+            "scenes/x.json: probes[0].name: expected a name without commas or quotes, got "
+            "\"a,b\"");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/output/probe_rate", 0)),
+            "scenes/x.json: output.probe_rate: expected a positive number, got 0");
 }
 
 }  // namespace

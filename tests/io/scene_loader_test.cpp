@@ -98,6 +98,16 @@ TEST(SceneLoader, CompleteSceneSetsEveryField) {
 
   EXPECT_EQ(scene.output.fps, 60.0);
   EXPECT_EQ(scene.output.format, FrameFormat::Ply);
+  EXPECT_EQ(scene.output.probeRate, 250.0);
+  ASSERT_EQ(scene.probes.size(), 3u);
+  EXPECT_EQ(scene.probes[0].name, "sensor");
+  EXPECT_EQ(scene.probes[0].kind, ProbeKind::Point);
+  EXPECT_EQ(scene.probes[0].position, (Vec3d{1.4, 0.05, 0}));
+  EXPECT_EQ(scene.probes[1].kind, ProbeKind::Level);
+  EXPECT_EQ(scene.probes[1].from, (Vec3d{0.5, 0, 0}));
+  EXPECT_EQ(scene.probes[1].to, (Vec3d{0.5, 1, 0}));
+  EXPECT_EQ(scene.probes[2].kind, ProbeKind::Force);
+  EXPECT_EQ(scene.probes[2].object, "vessel");
   EXPECT_EQ(scene.failure.maxDensityError, 0.2);
 }
 
@@ -124,6 +134,8 @@ TEST(SceneLoader, AbsentKeysTakeTheDefaultsOfSceneHpp) {
   EXPECT_FALSE(scene.calibration.speedOfSound.has_value());
   EXPECT_FALSE(scene.time.fixedDt.has_value());
   EXPECT_EQ(scene.output.format, FrameFormat::Vtp);
+  EXPECT_EQ(scene.output.probeRate, 1000.0);
+  EXPECT_TRUE(scene.probes.empty());
 }
 
 TEST(SceneLoader, DeformablesDefaultToTheSpringModel) {

@@ -64,7 +64,10 @@ inline nlohmann::json completeSceneJson() {
                     "stiffness": 1.75e5},
     "time": {"duration": 2.5, "cfl": 0.3, "force_factor": 0.2, "viscous_factor": 0.1,
              "max_dt": 0.005, "fixed_dt": 0.0001},
-    "output": {"fps": 60, "format": "ply"},
+    "output": {"fps": 60, "format": "ply", "probe_rate": 250},
+    "probes": [{"name": "sensor", "type": "point", "position": [1.4, 0.05, 0]},
+               {"name": "gauge", "type": "level", "from": [0.5, 0, 0], "to": [0.5, 1, 0]},
+               {"name": "on_vessel", "type": "force", "object": "vessel"}],
     "failure": {"max_density_error": 0.2}
   })");
 }
@@ -167,6 +170,16 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.time.fixedDt, b.time.fixedDt);
   EXPECT_EQ(a.output.fps, b.output.fps);
   EXPECT_EQ(a.output.format, b.output.format);
+  EXPECT_EQ(a.output.probeRate, b.output.probeRate);
+  ASSERT_EQ(a.probes.size(), b.probes.size());
+  for (std::size_t i = 0; i < a.probes.size(); ++i) {
+    EXPECT_EQ(a.probes[i].name, b.probes[i].name);
+    EXPECT_EQ(a.probes[i].kind, b.probes[i].kind);
+    EXPECT_EQ(a.probes[i].position, b.probes[i].position);
+    EXPECT_EQ(a.probes[i].from, b.probes[i].from);
+    EXPECT_EQ(a.probes[i].to, b.probes[i].to);
+    EXPECT_EQ(a.probes[i].object, b.probes[i].object);
+  }
   EXPECT_EQ(a.failure.maxDensityError, b.failure.maxDensityError);
 }
 
