@@ -69,7 +69,14 @@ struct BenchOptions {
   std::vector<std::string> solvers;
 };
 
+struct PlotOptions {
+  std::string dir;  // a run's output directory
+  bool quiet = false;
+};
+
 int runCommand(const RunOptions& options);
+// DIR/plots/stats.png and, with probes, DIR/plots/probes.png, drawn by gnuplot.
+int plotCommand(const PlotOptions& options);
 int validateCommand(const std::string& scene, const std::vector<std::string>& overrides);
 int infoCommand();
 int benchCommand(const BenchOptions& options);

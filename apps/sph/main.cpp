@@ -42,6 +42,13 @@ int main(int argc, char** argv) {
 
   auto* infoCmd = app.add_subcommand("info", "Build, backends and devices");
 
+  PlotOptions plot;
+  auto* plotCmd = app.add_subcommand(
+      "plot", "Draw a run's stats.csv and probes.csv against time: DIR/plots/*.png (gnuplot)");
+  plotCmd->add_option("dir", plot.dir, "The run's output directory (sph run --out DIR)")
+      ->required();
+  plotCmd->add_flag("--quiet", plot.quiet, "Print nothing but errors");
+
   RenderOptions render;
   auto* renderCmd =
       app.add_subcommand("render", "Images and a video of an earlier run, without a display");
@@ -126,6 +133,7 @@ int main(int argc, char** argv) {
     }
     if (*validateCmd) return validateCommand(validateScene, validateOverrides);
     if (*infoCmd) return infoCommand();
+    if (*plotCmd) return plotCommand(plot);
     if (*renderCmd) return renderCommand(render);
     if (*viewCmd) return viewCommand(view);
     if (*benchCmd) return benchCommand(bench);

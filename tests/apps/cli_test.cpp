@@ -91,6 +91,16 @@ TEST_F(Cli, RunWritesTheProbesAtTheirRate) {
             0u)
       << probes;
   EXPECT_NE(probes.find("\n0.02,"), std::string::npos) << probes;
+
+  // sph plot draws both files.
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
+  const Result plot = runSph("plot " + out.string());
+  ASSERT_EQ(plot.code, 0) << plot.output;
+  for (const char* png : {"stats.png", "probes.png"}) {
+    const std::string image = readFile(out / "plots" / png);
+    EXPECT_EQ(image.rfind("\x89PNG", 0), 0u) << png;
+  }
+  EXPECT_EQ(runSph("plot " + (dir_ / "nothing").string()).code, 2);
 }
 
 TEST_F(Cli, FormatsAndOverridesFromTheCommandLine) {
