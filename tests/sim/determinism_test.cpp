@@ -41,45 +41,43 @@ TEST(Determinism, OneAndTwoThreadsAgree) {
   expectIdentical(runFor(1, 200), runFor(2, 200));
 }
 
-// With objects: the engine in its own thread, in lock-step, at half the fluid's rate, and the
-// clamp squeezing the vessel. Fluid and object particles both come out byte-identical.
-ParticleFrame squeezeFor(int threads, int steps) {
+// With objects: `scene` from `start` (once its clamp moves) for `steps` more steps on `threads`.
+ParticleFrame squeeze(Scene scene, double start, int threads, int steps) {
   backend::setThreadCount(threads);
-  Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/artery_tear.json");
-  scene.objectEngine.rate = 0.5;
   Simulation sim(scene);
-  sim.advanceTo(0.06);  // the clamp starts at 0.05 s
+  sim.advanceTo(start);
   for (int i = 0; i < steps; ++i) sim.step();
   backend::setThreadCount(0);
   return sim.frame();
 }
 
+Scene shippedScene(const char* name) {
+  return io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/" + name);
+}
+
+// The engine in its own thread, in lock-step, at half the fluid's rate, and the clamp
+// squeezing the vessel. Fluid and object particles both come out byte-identical.
 TEST(Determinism, WithObjectsInTheirThreadSameBytes) {
-  const ParticleFrame a = squeezeFor(2, 100), b = squeezeFor(2, 100);
+  Scene scene = shippedScene("artery_tear.json");
+  scene.objectEngine.rate = 0.5;
+  const double start = 0.06;  // the clamp starts at 0.05 s
+  const ParticleFrame a = squeeze(scene, start, 2, 100), b = squeeze(scene, start, 2, 100);
   expectIdentical(a, b);
   EXPECT_EQ(a.kind, b.kind);
-  expectIdentical(a, squeezeFor(1, 100));
+  expectIdentical(a, squeeze(scene, start, 1, 100));
 }
 
 // The same under the incompressible solver with the objects as boundary particles: their
 // volumes, the solves through them and the reactions they take.
-ParticleFrame squeezeAsBoundaryFor(int threads, int steps) {
-  backend::setThreadCount(threads);
-  Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json");
+TEST(Determinism, WithObjectsAsBoundaryParticlesSameBytes) {
+  Scene scene = shippedScene("artery_squeeze.json");
   scene.fluid.solver = FluidSolver::Dfsph;
   scene.fluid.kernel = KernelKind::CubicSpline;
   scene.interaction.coupling = ObjectCoupling::Boundary;
-  Simulation sim(scene);
-  sim.advanceTo(0.055);  // the clamp starts at 0.05 s
-  for (int i = 0; i < steps; ++i) sim.step();
-  backend::setThreadCount(0);
-  return sim.frame();
-}
-
-TEST(Determinism, WithObjectsAsBoundaryParticlesSameBytes) {
-  const ParticleFrame a = squeezeAsBoundaryFor(2, 20);
-  expectIdentical(a, squeezeAsBoundaryFor(2, 20));
-  expectIdentical(a, squeezeAsBoundaryFor(1, 20));
+  const double start = 0.055;
+  const ParticleFrame a = squeeze(scene, start, 2, 20);
+  expectIdentical(a, squeeze(scene, start, 2, 20));
+  expectIdentical(a, squeeze(scene, start, 1, 20));
 }
 
 TEST(Determinism, TheRunMovedParticles) {
