@@ -62,7 +62,8 @@ const SteppedBoxDrop& steppedBoxDrop(int particles) {
 // stage's inputs are there, as in a step.
 std::unique_ptr<FluidEngine> engineAfterSteps(benchmark::State& state) {
   const SteppedBoxDrop& s = steppedBoxDrop(static_cast<int>(state.range(0)));
-  sph::sim::EngineSetup setup = sph::sim::engineSetup(s.scene, s.calibration);
+  sph::sim::EngineSetup setup =
+      sph::sim::engineSetup(s.scene, s.calibration, sph::sim::Walls(s.scene));
   setup.positions = s.position;
   setup.velocities = s.velocity;
   std::unique_ptr<FluidEngine> engine = sph::sim::makeCpuEngine(setup);

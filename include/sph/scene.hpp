@@ -34,12 +34,47 @@ struct FluidBlock {
   Vec3d angularVelocity{0, 0, 0};  // rad/s, a rigid spin about the box's centre
 };
 
-// A tank whose inner faces are `box`, built from `layers` layers of boundary particles
-// (Akinci et al. 2012). Without a lid unless `closed`.
-struct WallTank {
-  AxisBox box;
+// Static walls, sampled as boundary particles with their volumes (Akinci et al. 2012), on the
+// side away from the fluid, `layers` deep, half a spacing behind the surface the fluid meets.
+enum class WallKind {
+  Tank,      // the inner faces are `box`; no lid unless `closed`
+  Box,       // `box`: a solid obstacle, or a closed tank when the fluid is inside
+  Sphere,    // `center`, `radius`
+  Cylinder,  // `center`, `axis`, `radius`, `length` (end to end); discs at the ends if `capped`
+  Plane,     // the parallelogram `corner` + a `edge1` + b `edge2`, a, b in [0, 1]: the face of
+             // a solid behind it; the fluid on the side edge1 × edge2 points to
+  Mesh       // OBJ or STL, scaled by `scale`, its origin at `center`; the fluid on the side the
+             // triangles' normals point to (right-handed winding)
+};
+
+// Which side of a box, sphere or cylinder the fluid is on.
+enum class FluidSide { Outside, Inside };
+
+struct WallDesc {
+  WallKind kind = WallKind::Tank;
   int layers = 2;
-  bool closed = false;
+  AxisBox box;                           // tank, box
+  bool closed = false;                   // tank
+  FluidSide fluid = FluidSide::Outside;  // box, sphere, cylinder
+  Vec3d center{0, 0, 0};                 // sphere, cylinder, mesh
+  double radius = 0.0;                   // sphere, cylinder
+  double length = 0.0;                   // cylinder
+  Vec3d axis{0, 1, 0};                   // cylinder; any length but zero
+  bool capped = true;                    // cylinder
+  Vec3d corner{0, 0, 0};                 // plane
+  Vec3d edge1{0, 0, 0};                  // plane
+  Vec3d edge2{0, 0, 0};                  // plane
+  std::string meshFile;                  // mesh, resolved against the scene's folder
+  double scale = 1.0;                    // mesh
+  bool open = false;                     // mesh: holes are meant (a sheet, a pipe's ends)
+
+  static WallDesc tank(const AxisBox& inner, int layers = 2, bool closed = false) {
+    WallDesc w;
+    w.box = inner;
+    w.layers = layers;
+    w.closed = closed;
+    return w;
+  }
 };
 
 struct DomainDesc {
@@ -225,7 +260,7 @@ struct Scene {
   DomainDesc domain;
   Vec3d gravity{0, -9.81, 0};
   FluidDesc fluid;
-  std::vector<WallTank> walls;
+  std::vector<WallDesc> walls;
   std::vector<ObjectDesc> objects;
   InteractionDesc interaction;
   ObjectEngineDesc objectEngine;

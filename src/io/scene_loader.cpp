@@ -1,6 +1,7 @@
 #include "io/scene_loader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <system_error>
 #include <utility>
@@ -81,17 +82,75 @@ FluidDesc readFluid(const ObjectReader& in) {
   return fluid;
 }
 
-std::vector<WallTank> readWalls(const ObjectReader& root) {
-  std::vector<WallTank> walls;
-  for (const ObjectReader& in : root.objectArray("walls", /*required=*/false,
-                                                 /*nonEmpty=*/false)) {
-    in.choice("type", WallType::Tank, kWallTypeNames);
-    WallTank wall;
-    wall.box = readBox(in);
-    wall.layers = in.integer("layers", wall.layers, 1, 4);
-    wall.closed = in.boolean("closed", wall.closed);
-    walls.push_back(wall);
+// A key that belongs to another type of wall is a mistake, not something to ignore.
+void refuseOtherTypesKeys(const ObjectReader& in, WallKind kind) {
+  const std::vector<std::string>& keys = wallKeys(kind);
+  for (const KeySchema& key : sceneSchema().child("walls").element().children) {
+    if (key.name == "type" || key.name == "layers" || !in.has(key.name)) continue;
+    if (std::find(keys.begin(), keys.end(), key.name) != keys.end()) continue;
+    std::string list;
+    for (const std::string& k : keys) list += (list.empty() ? "" : ", ") + k;
+    in.context().fail(in.keyPath(key.name), std::string("not a key of a ") +
+                                                nameOf(kind, kWallKindNames) +
+                                                " wall; its keys are type, layers, " + list);
   }
+}
+
+double requiredLength(const ObjectReader& in, const std::string& key) {
+  const std::optional<double> value = in.optionalNumber(key, kPositive);
+  if (!value) in.context().fail(in.keyPath(key), "required key is missing (a length in m)");
+  return *value;
+}
+
+WallDesc readWall(const ObjectReader& in) {
+  WallDesc w;
+  w.kind = in.choice("type", w.kind, kWallKindNames);
+  w.layers = in.integer("layers", w.layers, 1, 4);
+  refuseOtherTypesKeys(in, w.kind);
+  switch (w.kind) {
+    case WallKind::Tank:
+      w.box = readBox(in);
+      w.closed = in.boolean("closed", w.closed);
+      break;
+    case WallKind::Box:
+      w.box = readBox(in);
+      w.fluid = in.choice("fluid", w.fluid, kFluidSideNames);
+      break;
+    case WallKind::Sphere:
+      w.center = in.requiredVec3("center");
+      w.radius = requiredLength(in, "radius");
+      w.fluid = in.choice("fluid", w.fluid, kFluidSideNames);
+      break;
+    case WallKind::Cylinder:
+      w.center = in.requiredVec3("center");
+      w.radius = requiredLength(in, "radius");
+      w.length = requiredLength(in, "length");
+      w.axis = in.vec3("axis", w.axis);
+      w.capped = in.boolean("capped", w.capped);
+      w.fluid = in.choice("fluid", w.fluid, kFluidSideNames);
+      break;
+    case WallKind::Plane:
+      w.corner = in.requiredVec3("corner");
+      w.edge1 = in.requiredVec3("edge1");
+      w.edge2 = in.requiredVec3("edge2");
+      break;
+    case WallKind::Mesh:
+      w.meshFile = in.string("file", w.meshFile);
+      if (w.meshFile.empty())
+        in.context().fail(in.keyPath("file"), "expected the path of an OBJ or STL file");
+      w.center = in.vec3("center", w.center);
+      w.scale = in.number("scale", w.scale, kPositive);
+      w.open = in.boolean("open", w.open);
+      break;
+  }
+  return w;
+}
+
+std::vector<WallDesc> readWalls(const ObjectReader& root) {
+  std::vector<WallDesc> walls;
+  for (const ObjectReader& in : root.objectArray("walls", /*required=*/false,
+                                                 /*nonEmpty=*/false))
+    walls.push_back(readWall(in));
   return walls;
 }
 
@@ -344,6 +403,72 @@ void checkInsideDomain(const ReadContext& context, const AxisBox& box, const std
   }
 }
 
+double lengthOf(const Vec3d& v) {
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+void checkPointInsideDomain(const ReadContext& context, const Vec3d& point, const std::string& key,
+                            const AxisBox& domain) {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!(point[axis] >= domain.min[axis] && point[axis] <= domain.max[axis]))
+      context.fail(key,
+                   "expected a point inside the domain box " + formatVec3(domain.min) + " to " +
+                       formatVec3(domain.max) + ", got " + formatVec3(point),
+                   {"domain.min", "domain.max"});
+  }
+}
+
+// A round wall's radius and length carry layers a spacing apart: below one spacing the
+// sampling has nothing to lay out.
+void checkAtLeastSpacing(const ReadContext& context, double value, const std::string& key,
+                         double spacing) {
+  if (!(value >= spacing))
+    context.fail(key,
+                 "expected at least the fluid's spacing " + formatNumber(spacing) + " m, got " +
+                     formatNumber(value),
+                 {"fluid.spacing"});
+}
+
+void checkWall(const ReadContext& context, const WallDesc& w, const std::string& path,
+               const Scene& scene) {
+  const double spacing = scene.fluid.spacing;
+  switch (w.kind) {
+    case WallKind::Tank:  // the box is the fluid's faces; the particle layers lie beyond it
+    case WallKind::Box:
+      checkBoxOrder(context, w.box, path);
+      checkInsideDomain(context, w.box, path, scene.domain.box);
+      break;
+    case WallKind::Sphere:
+      checkPointInsideDomain(context, w.center, joinKey(path, "center"), scene.domain.box);
+      checkAtLeastSpacing(context, w.radius, joinKey(path, "radius"), spacing);
+      break;
+    case WallKind::Cylinder:
+      checkPointInsideDomain(context, w.center, joinKey(path, "center"), scene.domain.box);
+      checkAtLeastSpacing(context, w.radius, joinKey(path, "radius"), spacing);
+      checkAtLeastSpacing(context, w.length, joinKey(path, "length"), 2.0 * spacing);
+      if (!(lengthOf(w.axis) > 0.0) || !std::isfinite(lengthOf(w.axis)))
+        context.fail(joinKey(path, "axis"), "expected a direction, got " + formatVec3(w.axis));
+      break;
+    case WallKind::Plane: {
+      checkPointInsideDomain(context, w.corner, joinKey(path, "corner"), scene.domain.box);
+      checkAtLeastSpacing(context, lengthOf(w.edge1), joinKey(path, "edge1"), spacing);
+      checkAtLeastSpacing(context, lengthOf(w.edge2), joinKey(path, "edge2"), spacing);
+      const Vec3d& a = w.edge1;
+      const Vec3d& b = w.edge2;
+      const Vec3d normal{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                         a[0] * b[1] - a[1] * b[0]};
+      if (!(lengthOf(normal) > 1e-6 * lengthOf(a) * lengthOf(b)))
+        context.fail(joinKey(path, "edge2"),
+                     "expected an edge not parallel to " + joinKey(path, "edge1") + " " +
+                         formatVec3(a) + ", got " + formatVec3(b),
+                     {joinKey(path, "edge1")});
+      break;
+    }
+    case WallKind::Mesh:
+      break;  // the file is read, and checked, as the walls are built
+  }
+}
+
 void checkGeometry(const ReadContext& context, const Scene& scene) {
   checkBoxOrder(context, scene.domain.box, "domain");
   for (std::size_t i = 0; i < scene.fluid.blocks.size(); ++i) {
@@ -351,12 +476,8 @@ void checkGeometry(const ReadContext& context, const Scene& scene) {
     checkBoxOrder(context, scene.fluid.blocks[i].box, path);
     checkInsideDomain(context, scene.fluid.blocks[i].box, path, scene.domain.box);
   }
-  // The wall box is the tank's inner faces; its particle layers lie outside it.
-  for (std::size_t i = 0; i < scene.walls.size(); ++i) {
-    const std::string path = joinIndex("walls", i);
-    checkBoxOrder(context, scene.walls[i].box, path);
-    checkInsideDomain(context, scene.walls[i].box, path, scene.domain.box);
-  }
+  for (std::size_t i = 0; i < scene.walls.size(); ++i)
+    checkWall(context, scene.walls[i], joinIndex("walls", i), scene);
 }
 
 // nlohmann's messages start with "[json.exception.parse_error.101] "; the rest is for people.

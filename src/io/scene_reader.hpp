@@ -74,6 +74,9 @@ class ObjectReader {
   // The elements of an array of objects; absent gives none unless `required`.
   std::vector<ObjectReader> objectArray(const std::string& key, bool required, bool nonEmpty) const;
 
+  bool has(const std::string& key) const { return find(key) != nullptr; }
+  const ReadContext& context() const { return *context_; }
+
   std::string string(const std::string& key, const std::string& fallback) const;
   bool boolean(const std::string& key, bool fallback) const;
   double number(const std::string& key, double fallback, const NumberRule& rule) const;

@@ -43,8 +43,10 @@ KeySchema buildSchema() {
             object("surface_tension", {value("coefficient"), value("threshold")}),
             arrayOf("blocks", {vec3("min"), vec3("max"), vec3("velocity"), value("hydrostatic"),
                                value("inside"), vec3("angular_velocity")})}),
-       arrayOf("walls",
-               {value("type"), vec3("min"), vec3("max"), value("layers"), value("closed")}),
+       arrayOf("walls", {value("type"), value("layers"), vec3("min"), vec3("max"), value("closed"),
+                         value("fluid"), vec3("center"), value("radius"), value("length"),
+                         vec3("axis"), value("capped"), vec3("corner"), vec3("edge1"),
+                         vec3("edge2"), value("file"), value("scale"), value("open")}),
        arrayOf("objects",
                {value("name"), value("motion"),
                 object("shape", {value("type"), vec3("center"), vec3("half_extents"),
@@ -155,6 +157,31 @@ std::string unknownKeyText(const std::string& parentPath, const std::string& key
     text += (i == 0 ? "" : ", ") + level.children[i].name;
   }
   return text + ")";
+}
+
+const std::vector<std::string>& wallKeys(WallKind kind) {
+  static const std::vector<std::string> tank{"min", "max", "closed"};
+  static const std::vector<std::string> box{"min", "max", "fluid"};
+  static const std::vector<std::string> sphere{"center", "radius", "fluid"};
+  static const std::vector<std::string> cylinder{"center", "radius", "length",
+                                                 "axis",   "capped", "fluid"};
+  static const std::vector<std::string> plane{"corner", "edge1", "edge2"};
+  static const std::vector<std::string> mesh{"file", "center", "scale", "open"};
+  switch (kind) {
+    case WallKind::Tank:
+      return tank;
+    case WallKind::Box:
+      return box;
+    case WallKind::Sphere:
+      return sphere;
+    case WallKind::Cylinder:
+      return cylinder;
+    case WallKind::Plane:
+      return plane;
+    case WallKind::Mesh:
+      break;
+  }
+  return mesh;
 }
 
 }  // namespace sph::io

@@ -71,9 +71,11 @@ inline constexpr NamedValue<FrameFormat> kFormatNames[] = {{"vtp", FrameFormat::
                                                            {"ply", FrameFormat::Ply},
                                                            {"csv", FrameFormat::Csv},
                                                            {"none", FrameFormat::None}};
-// Walls have one type so far; the key exists so that others can be added.
-enum class WallType { Tank };
-inline constexpr NamedValue<WallType> kWallTypeNames[] = {{"tank", WallType::Tank}};
+inline constexpr NamedValue<WallKind> kWallKindNames[] = {
+    {"tank", WallKind::Tank},         {"box", WallKind::Box},     {"sphere", WallKind::Sphere},
+    {"cylinder", WallKind::Cylinder}, {"plane", WallKind::Plane}, {"mesh", WallKind::Mesh}};
+inline constexpr NamedValue<FluidSide> kFluidSideNames[] = {{"outside", FluidSide::Outside},
+                                                            {"inside", FluidSide::Inside}};
 
 inline constexpr NamedValue<ProbeKind> kProbeKindNames[] = {
     {"point", ProbeKind::Point}, {"level", ProbeKind::Level}, {"force", ProbeKind::Force}};
@@ -89,6 +91,9 @@ inline constexpr NamedValue<ShapeKind> kShapeNames[] = {{"box", ShapeKind::Box},
                                                         {"capsule", ShapeKind::Capsule},
                                                         {"tube", ShapeKind::Tube},
                                                         {"mesh", ShapeKind::Mesh}};
+
+// The keys each type of wall reads, besides "type" and "layers"; the others are refused.
+const std::vector<std::string>& wallKeys(WallKind kind);
 
 template <class Enum, std::size_t N>
 const char* nameOf(Enum value, const NamedValue<Enum> (&names)[N]) {

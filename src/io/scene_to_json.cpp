@@ -69,15 +69,47 @@ json fluidToJson(const FluidDesc& fluid) {
   };
 }
 
-json wallsToJson(const std::vector<WallTank>& walls) {
-  json out = json::array();
-  for (const WallTank& wall : walls) {
-    json w = boxToJson(wall.box);
-    w["type"] = nameOf(WallType::Tank, kWallTypeNames);
-    w["layers"] = wall.layers;
-    w["closed"] = wall.closed;
-    out.push_back(std::move(w));
+json wallToJson(const WallDesc& wall) {
+  json w = json::object();
+  w["type"] = nameOf(wall.kind, kWallKindNames);
+  w["layers"] = wall.layers;
+  const char* fluid = nameOf(wall.fluid, kFluidSideNames);
+  switch (wall.kind) {
+    case WallKind::Tank:
+      w.update(boxToJson(wall.box));
+      w["closed"] = wall.closed;
+      break;
+    case WallKind::Box:
+      w.update(boxToJson(wall.box));
+      w["fluid"] = fluid;
+      break;
+    case WallKind::Sphere:
+      w.update({{"center", wall.center}, {"radius", wall.radius}, {"fluid", fluid}});
+      break;
+    case WallKind::Cylinder:
+      w.update({{"center", wall.center},
+                {"radius", wall.radius},
+                {"length", wall.length},
+                {"axis", wall.axis},
+                {"capped", wall.capped},
+                {"fluid", fluid}});
+      break;
+    case WallKind::Plane:
+      w.update({{"corner", wall.corner}, {"edge1", wall.edge1}, {"edge2", wall.edge2}});
+      break;
+    case WallKind::Mesh:
+      w.update({{"file", wall.meshFile},
+                {"center", wall.center},
+                {"scale", wall.scale},
+                {"open", wall.open}});
+      break;
   }
+  return w;
+}
+
+json wallsToJson(const std::vector<WallDesc>& walls) {
+  json out = json::array();
+  for (const WallDesc& wall : walls) out.push_back(wallToJson(wall));
   return out;
 }
 

@@ -34,6 +34,37 @@ double gravityMagnitude(const Scene& scene) {
   return std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
 }
 
+// The lowest point of a wall's shape along the up axis (`sign` +1 when up is +axis); a mesh's
+// is not known before it is read, and does not count.
+double lowestHeight(const WallDesc& wall, int up, double sign) {
+  const auto height = [&](double coordinate) { return sign * coordinate; };
+  switch (wall.kind) {
+    case WallKind::Tank:
+    case WallKind::Box:
+      return std::min(height(wall.box.min[up]), height(wall.box.max[up]));
+    case WallKind::Sphere:
+      return height(wall.center[up]) - wall.radius;
+    case WallKind::Cylinder: {
+      const double length = std::sqrt(wall.axis[0] * wall.axis[0] + wall.axis[1] * wall.axis[1] +
+                                      wall.axis[2] * wall.axis[2]);
+      const double along = length > 0.0 ? std::abs(wall.axis[up]) / length : 0.0;
+      return height(wall.center[up]) - 0.5 * wall.length * along -
+             wall.radius * std::sqrt(std::max(0.0, 1.0 - along * along));
+    }
+    case WallKind::Plane: {
+      double lowest = HUGE_VAL;
+      for (double a : {0.0, 1.0})
+        for (double b : {0.0, 1.0})
+          lowest =
+              std::min(lowest, height(wall.corner[up] + a * wall.edge1[up] + b * wall.edge2[up]));
+      return lowest;
+    }
+    case WallKind::Mesh:
+      break;
+  }
+  return HUGE_VAL;
+}
+
 // Height of the highest fluid above the lowest floor, along gravity.
 double fallHeight(const Scene& scene) {
   const int up = upAxisOf(scene.gravity);
@@ -44,8 +75,7 @@ double fallHeight(const Scene& scene) {
     top = std::max({top, height(block.box.min[up]), height(block.box.max[up])});
     floor = std::min({floor, height(block.box.min[up]), height(block.box.max[up])});
   }
-  for (const auto& tank : scene.walls)
-    floor = std::min({floor, height(tank.box.min[up]), height(tank.box.max[up])});
+  for (const WallDesc& wall : scene.walls) floor = std::min(floor, lowestHeight(wall, up, sign));
   if (scene.domain.dampedBox)
     floor = std::min({floor, height(scene.domain.box.min[up]), height(scene.domain.box.max[up])});
   return top > floor ? top - floor : 0.0;
@@ -227,14 +257,11 @@ fluid::DomainParameters domainParameters(const Scene& scene) {
                                  d.dampedBox, static_cast<float>(d.damping)};
 }
 
-EngineSetup engineSetup(const Scene& scene, const Calibration& calibration) {
+EngineSetup engineSetup(const Scene& scene, const Calibration& calibration, const Walls& walls) {
   EngineSetup setup;
   setup.params = fluidParameters(scene, calibration);
   setup.domain = domainParameters(scene);
-  for (const auto& tank : scene.walls) {
-    const auto points = sampleTank(tank, scene.fluid.spacing, scene.gravity);
-    setup.walls.insert(setup.walls.end(), points.begin(), points.end());
-  }
+  setup.walls = walls.particles();
   // About twice the neighbours of a particle in the initial lattice leaves room for
   // compression. A multiple of 16 indices (a cache line): 64 for h = 2d, which measured 6 %
   // faster at 262,144 particles than 68, the lists spreading over less memory.

@@ -5,6 +5,7 @@
 #include "interaction/object_particles.hpp"
 #include "objects/object_world.hpp"
 #include "sim/fluid_engine.hpp"
+#include "sim/walls.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::sim {
@@ -18,7 +19,7 @@ fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& ca
 fluid::DomainParameters domainParameters(const Scene& scene);
 // An engine's setup for the scene, all but the fluid particles: the parameters, the domain, the
 // walls' particles and room for each particle's neighbour list. The caller adds the fluid.
-EngineSetup engineSetup(const Scene& scene, const Calibration& calibration);
+EngineSetup engineSetup(const Scene& scene, const Calibration& calibration, const Walls& walls);
 interaction::InteractionParameters interactionParameters(const Scene& scene,
                                                          const Calibration& calibration);
 objects::WorldSettings worldSettings(const Scene& scene, const Calibration& calibration);

@@ -28,12 +28,12 @@ std::vector<Vec3> sampleBlock(const AxisBox& box, double spacing) {
   return points;
 }
 
-std::vector<Vec3> sampleTank(const WallTank& tank, double spacing, const Vec3d& gravity) {
+std::vector<Vec3> sampleTank(const AxisBox& inner, int layers, bool closed, double spacing,
+                             const Vec3d& gravity) {
   const int upAxis = upAxisOf(gravity);
   const bool upIsPositive = gravity[upAxis] <= 0.0;
-  const int layers = tank.layers;
   int n[3];
-  for (int a = 0; a < 3; ++a) n[a] = cellsAlong(tank.box.max[a] - tank.box.min[a], spacing);
+  for (int a = 0; a < 3; ++a) n[a] = cellsAlong(inner.max[a] - inner.min[a], spacing);
   std::vector<Vec3> points;
   for (int k = -layers; k < n[2] + layers; ++k)
     for (int j = -layers; j < n[1] + layers; ++j)
@@ -43,11 +43,10 @@ std::vector<Vec3> sampleTank(const WallTank& tank, double spacing, const Vec3d& 
         for (int a = 0; a < 3; ++a) inside = inside && index[a] >= 0 && index[a] < n[a];
         if (inside) continue;
         // No lid: nothing beyond the rim on the side gravity points away from.
-        if (!tank.closed && (upIsPositive ? index[upAxis] >= n[upAxis] : index[upAxis] < 0))
-          continue;
-        points.push_back(Vec3{static_cast<float>(tank.box.min[0] + (i + 0.5) * spacing),
-                              static_cast<float>(tank.box.min[1] + (j + 0.5) * spacing),
-                              static_cast<float>(tank.box.min[2] + (k + 0.5) * spacing)});
+        if (!closed && (upIsPositive ? index[upAxis] >= n[upAxis] : index[upAxis] < 0)) continue;
+        points.push_back(Vec3{static_cast<float>(inner.min[0] + (i + 0.5) * spacing),
+                              static_cast<float>(inner.min[1] + (j + 0.5) * spacing),
+                              static_cast<float>(inner.min[2] + (k + 0.5) * spacing)});
       }
   return points;
 }

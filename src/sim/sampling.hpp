@@ -12,9 +12,10 @@ namespace sph::sim {
 // faces are the fluid's faces.
 std::vector<Vec3> sampleBlock(const AxisBox& box, double spacing);
 
-// `tank.layers` layers of particles outside the tank's inner faces, on the same lattice as the
-// fluid, open on the side gravity points away from unless closed.
-std::vector<Vec3> sampleTank(const WallTank& tank, double spacing, const Vec3d& gravity);
+// `layers` layers of particles outside the tank's inner faces `inner`, on the same lattice as
+// the fluid, open on the side gravity points away from unless closed.
+std::vector<Vec3> sampleTank(const AxisBox& inner, int layers, bool closed, double spacing,
+                             const Vec3d& gravity);
 
 // Moves the points of a block resting under gravity to the compression of hydrostatic
 // equilibrium: at depth z below the block's top the density is ρ0 (1 + g z / c0²) to first

@@ -17,6 +17,7 @@
 #include "sim/object_runner.hpp"
 #include "sim/probes.hpp"
 #include "sim/sampling.hpp"
+#include "sim/walls.hpp"
 #include "sph/core/kernels.hpp"
 #include "sph/core/time_step.hpp"
 #include "sph/devices.hpp"
@@ -78,7 +79,8 @@ struct Simulation::Impl {
   Impl(const Scene& s, const SimulationOptions& options) : scene(s) {
     backend::requireCompiledInstructionSet();
     calibration = sim::calibrate(scene);
-    sim::EngineSetup setup = sim::engineSetup(scene, calibration);
+    const sim::Walls walls(scene);
+    sim::EngineSetup setup = sim::engineSetup(scene, calibration, walls);
     if (options.neighborListLength > 0) setup.neighborStride = options.neighborListLength;
     setup.walk = options.cpuPasses == CpuPasses::Batched ? fluid::NeighborWalk::Batched
                                                          : fluid::NeighborWalk::OneAtATime;
@@ -94,7 +96,7 @@ struct Simulation::Impl {
       checkContactReach(*world);
     }
 
-    sampleFluid(setup, world ? &*world : nullptr);
+    sampleFluid(setup, walls, world ? &*world : nullptr);
     initialFluid = setup.positions.size();
     engine =
         useCuda(options) ? sim::makeCudaEngine(setup, options.device) : sim::makeCpuEngine(setup);
@@ -208,9 +210,11 @@ struct Simulation::Impl {
     return options.backend == Backend::Auto && !queryGpus().devices.empty();
   }
 
-  void sampleFluid(sim::EngineSetup& setup, const objects::ObjectWorld* world) const {
+  void sampleFluid(sim::EngineSetup& setup, const sim::Walls& walls,
+                   const objects::ObjectWorld* world) const {
     for (const auto& block : scene.fluid.blocks) {
       auto points = sim::sampleBlock(block.box, scene.fluid.spacing);
+      walls.removeOverlap(points);
       if (!block.inside.empty()) keepInside(points, block.inside, world);
       if (world) {
         const int container = block.inside.empty() ? -1 : int(objectIndex(block.inside));

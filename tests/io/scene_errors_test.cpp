@@ -116,7 +116,10 @@ TEST(SceneErrors, ValuesOutOfRange) {
       {"/fluid/surface_tension/coefficient", -0.07, "fluid.surface_tension.coefficient: exp"},
       {"/fluid/surface_tension/threshold", 0, "fluid.surface_tension.threshold: expected a pos"},
       {"/fluid/spacing", nullptr, "fluid.spacing: expected a positive number, got null"},
-      {"/walls/0/type", "box", "walls[0].type: expected one of \"tank\", got \"box\""},
+      {"/walls/0/type", "bowl",
+       "walls[0].type: expected one of \"tank\", \"box\", \"sphere\", \"cylinder\", \"plane\", "
+       "\"mesh\", got \"bowl\""},
+      {"/walls/1/fluid", "above", "walls[1].fluid: expected one of \"outside\", \"inside\""},
       {"/walls/0/layers", 5, "walls[0].layers: expected an integer in [1, 4], got 5"},
       {"/walls/0/layers", 2.5, "walls[0].layers: expected an integer in [1, 4], got 2.5"},
       {"/walls/0/closed", "no", "walls[0].closed: expected true or false"},
@@ -206,6 +209,26 @@ TEST(SceneErrors, BoxesMustLieInsideTheDomain) {
             "[-0.1, 0, -0.2] to [1.5, 1.2, 0.3], got [1.2, 0.1, 0.4]");
   expectContains(parseError(with(completeSceneJson(), "/walls/0/min", {-0.5, 0, 0})),
                  {"scenes/x.json: walls[0].min: expected a point inside the domain box"});
+}
+
+TEST(SceneErrors, BadWallsNameTheKey) {
+  // Each type reads its own keys; another type's key is refused, not ignored.
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/walls/2/min", {0, 0, 0})),
+            "scenes/x.json: walls[2].min: not a key of a sphere wall; its keys are type, layers, "
+            "center, radius, fluid");
+  EXPECT_EQ(parseError(without(completeSceneJson(), "/walls/2/radius")),
+            "scenes/x.json: walls[2].radius: required key is missing (a length in m)");
+  expectContains(parseError(with(completeSceneJson(), "/walls/3/radius", 0.001)),
+                 {"scenes/x.json: walls[3].radius: expected at least the fluid's spacing"});
+  expectContains(parseError(with(completeSceneJson(), "/walls/3/axis", {0, 0, 0})),
+                 {"scenes/x.json: walls[3].axis: expected a direction, got [0, 0, 0]"});
+  expectContains(parseError(with(completeSceneJson(), "/walls/4/edge2", {0.6, 0.4, 0})),
+                 {"scenes/x.json: walls[4].edge2: expected an edge not parallel to "
+                  "walls[4].edge1 [0.3, 0.2, 0], got [0.6, 0.4, 0]"});
+  expectContains(parseError(with(completeSceneJson(), "/walls/2/center", {3, 0, 0})),
+                 {"scenes/x.json: walls[2].center: expected a point inside the domain box"});
+  EXPECT_EQ(parseError(without(completeSceneJson(), "/walls/5/file")),
+            "scenes/x.json: walls[5].file: expected the path of an OBJ or STL file");
 }
 
 // Boundary coupling hands the objects the incompressible solver's pressure: none without it.

@@ -64,11 +64,36 @@ TEST(SceneLoader, CompleteSceneSetsEveryField) {
   EXPECT_EQ(fluid.blocks[1].box.max, (Vec3d{1.2, 0.1, 0.1}));
   EXPECT_EQ(fluid.blocks[1].velocity, (Vec3d{0, 0, 0}));
 
-  ASSERT_EQ(scene.walls.size(), 1u);
+  ASSERT_EQ(scene.walls.size(), 6u);
+  EXPECT_EQ(scene.walls[0].kind, WallKind::Tank);
   EXPECT_EQ(scene.walls[0].box.min, (Vec3d{0, 0, -0.15}));
   EXPECT_EQ(scene.walls[0].box.max, (Vec3d{1.4, 1.0, 0.25}));
   EXPECT_EQ(scene.walls[0].layers, 3);
   EXPECT_TRUE(scene.walls[0].closed);
+  EXPECT_EQ(scene.walls[1].kind, WallKind::Box);
+  EXPECT_EQ(scene.walls[1].fluid, FluidSide::Inside);
+  EXPECT_EQ(scene.walls[1].layers, 1);
+  EXPECT_EQ(scene.walls[2].kind, WallKind::Sphere);
+  EXPECT_EQ(scene.walls[2].center, (Vec3d{0.3, 0.5, 0}));
+  EXPECT_EQ(scene.walls[2].radius, 0.1);
+  EXPECT_EQ(scene.walls[2].layers, 2);
+  const WallDesc& pipe = scene.walls[3];
+  EXPECT_EQ(pipe.kind, WallKind::Cylinder);
+  EXPECT_EQ(pipe.length, 0.3);
+  EXPECT_EQ(pipe.axis, (Vec3d{1, 0, 0}));
+  EXPECT_FALSE(pipe.capped);
+  EXPECT_EQ(pipe.layers, 4);
+  const WallDesc& ramp = scene.walls[4];
+  EXPECT_EQ(ramp.kind, WallKind::Plane);
+  EXPECT_EQ(ramp.corner, (Vec3d{0.8, 0, -0.1}));
+  EXPECT_EQ(ramp.edge1, (Vec3d{0.3, 0.2, 0}));
+  EXPECT_EQ(ramp.edge2, (Vec3d{0, 0, 0.2}));
+  const WallDesc& funnel = scene.walls[5];
+  EXPECT_EQ(funnel.kind, WallKind::Mesh);
+  EXPECT_EQ(funnel.meshFile, "meshes/funnel.obj");
+  EXPECT_EQ(funnel.center, (Vec3d{0.5, 0.8, 0}));
+  EXPECT_EQ(funnel.scale, 0.5);
+  EXPECT_TRUE(funnel.open);
 
   ASSERT_EQ(scene.objects.size(), 1u);
   const DeformableDesc& vessel = scene.objects[0].deformable;
@@ -198,9 +223,19 @@ TEST(SceneJson, RoundTripsValuesThatNeedEveryDigit) {
   expectScenesEqual(parseScene(sceneToJson(original), kSource), original);
 }
 
-// Every key of the schema is written, in every object and every array element.
+// Every key of the schema is written, in every object and every array element; a wall, which
+// reads only the keys of its type, with those.
 void expectEveryKey(const json& value, const KeySchema& schema, const std::string& path) {
-  if (schema.shape == KeySchema::Shape::Object) {
+  if (schema.shape == KeySchema::Shape::Object && path.rfind("walls[", 0) == 0) {
+    ASSERT_TRUE(value.is_object() && value.contains("type")) << path;
+    std::vector<std::string> keys;
+    for (const auto& named : kWallKindNames)
+      if (value["type"] == named.name) keys = wallKeys(named.value);
+    keys.insert(keys.end(), {"type", "layers"});
+    for (const std::string& key : keys)
+      EXPECT_TRUE(value.contains(key)) << joinKey(path, key) << " is not written";
+    EXPECT_EQ(value.size(), keys.size()) << path << " has keys of another type of wall";
+  } else if (schema.shape == KeySchema::Shape::Object) {
     ASSERT_TRUE(value.is_object()) << path;
     for (const KeySchema& key : schema.children) {
       ASSERT_TRUE(value.contains(key.name)) << joinKey(path, key.name) << " is not written";

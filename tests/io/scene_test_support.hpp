@@ -48,7 +48,16 @@ inline nlohmann::json completeSceneJson() {
       ]
     },
     "walls": [{"type": "tank", "min": [0, 0, -0.15], "max": [1.4, 1.0, 0.25], "layers": 3,
-               "closed": true}],
+               "closed": true},
+              {"type": "box", "min": [0.6, 0, -0.05], "max": [0.7, 0.1, 0.05], "fluid": "inside",
+               "layers": 1},
+              {"type": "sphere", "center": [0.3, 0.5, 0], "radius": 0.1, "fluid": "inside"},
+              {"type": "cylinder", "center": [1, 0.5, 0], "radius": 0.05, "length": 0.3,
+               "axis": [1, 0, 0], "capped": false, "fluid": "inside", "layers": 4},
+              {"type": "plane", "corner": [0.8, 0, -0.1], "edge1": [0.3, 0.2, 0],
+               "edge2": [0, 0, 0.2]},
+              {"type": "mesh", "file": "meshes/funnel.obj", "center": [0.5, 0.8, 0], "scale": 0.5,
+               "open": true}],
     "objects": [{"name": "vessel", "motion": "deformable",
                  "shape": {"type": "tube", "center": [0.5, 0.3, 0], "radius": 0.05, "length": 0.4},
                  "deformable": {"stiffness": 30, "damping": 0.002, "breaking_strain": 0.3,
@@ -128,9 +137,24 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
   }
   ASSERT_EQ(a.walls.size(), b.walls.size());
   for (std::size_t i = 0; i < a.walls.size(); ++i) {
-    expectBoxesEqual(a.walls[i].box, b.walls[i].box);
-    EXPECT_EQ(a.walls[i].layers, b.walls[i].layers);
-    EXPECT_EQ(a.walls[i].closed, b.walls[i].closed);
+    const WallDesc& wa = a.walls[i];
+    const WallDesc& wb = b.walls[i];
+    EXPECT_EQ(wa.kind, wb.kind);
+    expectBoxesEqual(wa.box, wb.box);
+    EXPECT_EQ(wa.layers, wb.layers);
+    EXPECT_EQ(wa.closed, wb.closed);
+    EXPECT_EQ(wa.fluid, wb.fluid);
+    EXPECT_EQ(wa.center, wb.center);
+    EXPECT_EQ(wa.radius, wb.radius);
+    EXPECT_EQ(wa.length, wb.length);
+    EXPECT_EQ(wa.axis, wb.axis);
+    EXPECT_EQ(wa.capped, wb.capped);
+    EXPECT_EQ(wa.corner, wb.corner);
+    EXPECT_EQ(wa.edge1, wb.edge1);
+    EXPECT_EQ(wa.edge2, wb.edge2);
+    EXPECT_EQ(wa.meshFile, wb.meshFile);
+    EXPECT_EQ(wa.scale, wb.scale);
+    EXPECT_EQ(wa.open, wb.open);
   }
   ASSERT_EQ(a.objects.size(), b.objects.size());
   for (std::size_t i = 0; i < a.objects.size(); ++i) {

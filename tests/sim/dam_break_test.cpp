@@ -46,7 +46,7 @@ Scene damBreak(double a) {
   // within a few acoustic times (H / c0 = 7 ms), about as the experiment's gate opened. Started
   // hydrostatic, the front leads the T = 0.62 point by 11 % and the others by at most 8 %.
   s.fluid.blocks.push_back({{{0, 0, 0}, {a, a, 0.5 * a}}, {0, 0, 0}, false, ""});
-  s.walls.push_back({{{0, 0, 0}, {5.5 * a, 1.5 * a, 0.5 * a}}, 2, false});
+  s.walls.push_back(WallDesc::tank({{0, 0, 0}, {5.5 * a, 1.5 * a, 0.5 * a}}, 2, false));
   return s;
 }
 

@@ -50,7 +50,7 @@ Scene spinningBox(bool divergenceSolve) {
   block.box = {{0, 0, 0}, {0.1, 0.1, 0.1}};
   block.angularVelocity = {0, 0, 4.0};
   s.fluid.blocks.push_back(block);
-  s.walls.push_back({{{0, 0, 0}, {0.1, 0.1, 0.1}}, 2, true});
+  s.walls.push_back(WallDesc::tank({{0, 0, 0}, {0.1, 0.1, 0.1}}, 2, true));
   s.calibration.maxExpectedSpeed = 0.5;
   // Left alone, the divergence solve does not undo the density error each step's finite
   // length leaves.

@@ -30,7 +30,7 @@ Scene tankWithBodies() {
   water.box = {{0, 0, 0}, {0.3, 0.14, 0.16}};
   water.hydrostatic = true;
   s.fluid.blocks.push_back(water);
-  s.walls.push_back({{{0, 0, 0}, {0.3, 0.3, 0.16}}, 2, false});
+  s.walls.push_back(WallDesc::tank({{0, 0, 0}, {0.3, 0.3, 0.16}}, 2, false));
   ObjectDesc box;
   box.name = "box";
   box.shape.kind = ShapeKind::Box;

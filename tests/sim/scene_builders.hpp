@@ -15,7 +15,7 @@ inline Scene restingTank(double spacing, double width, double height) {
   s.fluid.wallFriction = 1.0;
   s.domain.box = {{-0.1, -0.1, -0.1}, {width + 0.1, 2.0 * height + 0.1, width + 0.1}};
   s.fluid.blocks.push_back({{{0, 0, 0}, {width, height, width}}, {0, 0, 0}, false, ""});
-  s.walls.push_back({{{0, 0, 0}, {width, 1.25 * height, width}}, 2, false});
+  s.walls.push_back(WallDesc::tank({{0, 0, 0}, {width, 1.25 * height, width}}, 2, false));
   return s;
 }
 
