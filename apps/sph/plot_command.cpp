@@ -62,7 +62,8 @@ struct Panel {
 std::string script(const fs::path& file, const std::string& time, const std::vector<Panel>& panels,
                    const fs::path& png) {
   const int rows = int(panels.size() + 1) / 2;
-  std::string s = "set terminal pngcairo size 1200," + std::to_string(300 * rows) +
+  // noenhanced: probe names are printed as written, an underscore not a subscript.
+  std::string s = "set terminal pngcairo noenhanced size 1200," + std::to_string(300 * rows) +
                   " font ',10'\n"
                   "set output " +
                   quoted(png.string()) +
