@@ -51,6 +51,7 @@ enum class WallKind {
 enum class FluidSide { Outside, Inside };
 
 struct WallDesc {
+  std::string name;  // for force probes; the loader gives "wall<i>" when unset
   WallKind kind = WallKind::Tank;
   int layers = 2;
   AxisBox box;                           // tank, box
@@ -150,7 +151,7 @@ struct OutputDesc {
 enum class ProbeKind {
   Point,  // pressure, density and velocity at `position` (core/probe.hpp)
   Level,  // the free surface along the line `from` → `to`: its distance from `from`
-  Force   // the fluid's force on `object`
+  Force   // the fluid's force on `object` or on `wall`
 };
 
 struct ProbeDesc {
@@ -159,7 +160,8 @@ struct ProbeDesc {
   Vec3d position{0, 0, 0};  // Point
   Vec3d from{0, 0, 0};      // Level
   Vec3d to{0, 0, 0};        // Level
-  std::string object;       // Force: an object's name
+  std::string object;       // Force: an object's name, or
+  std::string wall;         // Force: a wall's name
 };
 
 struct FailureDesc {

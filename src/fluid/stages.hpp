@@ -10,3 +10,4 @@
 #include "fluid/measure_step.hpp"
 #include "fluid/prepare_boundary.hpp"
 #include "fluid/sample_points.hpp"
+#include "fluid/wall_forces.hpp"

@@ -86,13 +86,14 @@ FluidDesc readFluid(const ObjectReader& in) {
 void refuseOtherTypesKeys(const ObjectReader& in, WallKind kind) {
   const std::vector<std::string>& keys = wallKeys(kind);
   for (const KeySchema& key : sceneSchema().child("walls").element().children) {
-    if (key.name == "type" || key.name == "layers" || !in.has(key.name)) continue;
+    if (key.name == "name" || key.name == "type" || key.name == "layers" || !in.has(key.name))
+      continue;
     if (std::find(keys.begin(), keys.end(), key.name) != keys.end()) continue;
     std::string list;
     for (const std::string& k : keys) list += (list.empty() ? "" : ", ") + k;
     in.context().fail(in.keyPath(key.name), std::string("not a key of a ") +
                                                 nameOf(kind, kWallKindNames) +
-                                                " wall; its keys are type, layers, " + list);
+                                                " wall; its keys are name, type, layers, " + list);
   }
 }
 
@@ -102,8 +103,9 @@ double requiredLength(const ObjectReader& in, const std::string& key) {
   return *value;
 }
 
-WallDesc readWall(const ObjectReader& in) {
+WallDesc readWall(const ObjectReader& in, std::size_t index) {
   WallDesc w;
+  w.name = in.string("name", "wall" + std::to_string(index));
   w.kind = in.choice("type", w.kind, kWallKindNames);
   w.layers = in.integer("layers", w.layers, 1, 4);
   refuseOtherTypesKeys(in, w.kind);
@@ -150,7 +152,7 @@ std::vector<WallDesc> readWalls(const ObjectReader& root) {
   std::vector<WallDesc> walls;
   for (const ObjectReader& in : root.objectArray("walls", /*required=*/false,
                                                  /*nonEmpty=*/false))
-    walls.push_back(readWall(in));
+    walls.push_back(readWall(in, walls.size()));
   return walls;
 }
 
@@ -238,6 +240,19 @@ ObjectEngineDesc readObjectEngine(const ObjectReader& in) {
 }
 
 // Object names are how fluid blocks refer to them: unique, and every reference resolves.
+void checkWallNames(const ReadContext& context, const Scene& scene) {
+  for (std::size_t i = 0; i < scene.walls.size(); ++i) {
+    const std::string& name = scene.walls[i].name;
+    if (name.empty()) context.fail(joinIndex("walls", i) + ".name", "expected a name, got \"\"");
+    for (std::size_t j = 0; j < i; ++j) {
+      if (scene.walls[j].name == name)
+        context.fail(joinIndex("walls", i) + ".name", "expected a name no other wall has, got \"" +
+                                                          name + "\" (also walls[" +
+                                                          std::to_string(j) + "])");
+    }
+  }
+}
+
 void checkObjectNames(const ReadContext& context, const Scene& scene) {
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
@@ -298,7 +313,21 @@ void checkProbes(const ReadContext& context, const Scene& scene) {
                          ", got the same point",
                      {path + ".from"});
     }
-    if (p.kind == ProbeKind::Force) {
+    if (p.kind == ProbeKind::Force && !p.wall.empty()) {
+      if (!p.object.empty())
+        context.fail(path + ".wall",
+                     "expected an object or a wall, not both (object \"" + p.object + "\")",
+                     {path + ".object"});
+      bool found = false;
+      for (const WallDesc& w : scene.walls) found = found || w.name == p.wall;
+      if (!found) {
+        std::string names;
+        for (const WallDesc& w : scene.walls) names += (names.empty() ? "" : ", ") + w.name;
+        context.fail(path + ".wall", "expected the name of a wall (" +
+                                         (names.empty() ? "none" : names) + "), got \"" + p.wall +
+                                         "\"");
+      }
+    } else if (p.kind == ProbeKind::Force) {
       bool found = false;
       for (const ObjectDesc& o : scene.objects) found = found || o.name == p.object;
       if (!found) {
@@ -362,7 +391,10 @@ std::vector<ProbeDesc> readProbes(const ObjectReader& root) {
       p.from = in.requiredVec3("from");
       p.to = in.requiredVec3("to");
     }
-    if (p.kind == ProbeKind::Force) p.object = in.string("object", "");
+    if (p.kind == ProbeKind::Force) {
+      p.object = in.string("object", "");
+      p.wall = in.string("wall", "");
+    }
     probes.push_back(std::move(p));
   }
   return probes;
@@ -407,17 +439,6 @@ double lengthOf(const Vec3d& v) {
   return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
-void checkPointInsideDomain(const ReadContext& context, const Vec3d& point, const std::string& key,
-                            const AxisBox& domain) {
-  for (int axis = 0; axis < 3; ++axis) {
-    if (!(point[axis] >= domain.min[axis] && point[axis] <= domain.max[axis]))
-      context.fail(key,
-                   "expected a point inside the domain box " + formatVec3(domain.min) + " to " +
-                       formatVec3(domain.max) + ", got " + formatVec3(point),
-                   {"domain.min", "domain.max"});
-  }
-}
-
 // A round wall's radius and length carry layers a spacing apart: below one spacing the
 // sampling has nothing to lay out.
 void checkAtLeastSpacing(const ReadContext& context, double value, const std::string& key,
@@ -439,18 +460,18 @@ void checkWall(const ReadContext& context, const WallDesc& w, const std::string&
       checkInsideDomain(context, w.box, path, scene.domain.box);
       break;
     case WallKind::Sphere:
-      checkPointInsideDomain(context, w.center, joinKey(path, "center"), scene.domain.box);
+      checkPointInDomain(context, w.center, joinKey(path, "center"), scene.domain.box);
       checkAtLeastSpacing(context, w.radius, joinKey(path, "radius"), spacing);
       break;
     case WallKind::Cylinder:
-      checkPointInsideDomain(context, w.center, joinKey(path, "center"), scene.domain.box);
+      checkPointInDomain(context, w.center, joinKey(path, "center"), scene.domain.box);
       checkAtLeastSpacing(context, w.radius, joinKey(path, "radius"), spacing);
       checkAtLeastSpacing(context, w.length, joinKey(path, "length"), 2.0 * spacing);
       if (!(lengthOf(w.axis) > 0.0) || !std::isfinite(lengthOf(w.axis)))
         context.fail(joinKey(path, "axis"), "expected a direction, got " + formatVec3(w.axis));
       break;
     case WallKind::Plane: {
-      checkPointInsideDomain(context, w.corner, joinKey(path, "corner"), scene.domain.box);
+      checkPointInDomain(context, w.corner, joinKey(path, "corner"), scene.domain.box);
       checkAtLeastSpacing(context, lengthOf(w.edge1), joinKey(path, "edge1"), spacing);
       checkAtLeastSpacing(context, lengthOf(w.edge2), joinKey(path, "edge2"), spacing);
       const Vec3d& a = w.edge1;
@@ -520,6 +541,7 @@ Scene parseScene(const json& document, const std::string& sourceName,
   scene.failure = readFailure(root.object("failure"));
   checkGeometry(context, scene);
   checkObjectNames(context, scene);
+  checkWallNames(context, scene);
   checkCoupling(context, scene);
   checkProbes(context, scene);
   return scene;

@@ -43,10 +43,11 @@ KeySchema buildSchema() {
             object("surface_tension", {value("coefficient"), value("threshold")}),
             arrayOf("blocks", {vec3("min"), vec3("max"), vec3("velocity"), value("hydrostatic"),
                                value("inside"), vec3("angular_velocity")})}),
-       arrayOf("walls", {value("type"), value("layers"), vec3("min"), vec3("max"), value("closed"),
-                         value("fluid"), vec3("center"), value("radius"), value("length"),
-                         vec3("axis"), value("capped"), vec3("corner"), vec3("edge1"),
-                         vec3("edge2"), value("file"), value("scale"), value("open")}),
+       arrayOf("walls",
+               {value("name"), value("type"), value("layers"), vec3("min"), vec3("max"),
+                value("closed"), value("fluid"), vec3("center"), value("radius"), value("length"),
+                vec3("axis"), value("capped"), vec3("corner"), vec3("edge1"), vec3("edge2"),
+                value("file"), value("scale"), value("open")}),
        arrayOf("objects",
                {value("name"), value("motion"),
                 object("shape", {value("type"), vec3("center"), vec3("half_extents"),
@@ -70,7 +71,7 @@ KeySchema buildSchema() {
                        value("viscous_factor"), value("max_dt"), value("fixed_dt")}),
        object("output", {value("fps"), value("format"), value("probe_rate")}),
        arrayOf("probes", {value("name"), value("type"), vec3("position"), vec3("from"), vec3("to"),
-                          value("object")}),
+                          value("object"), value("wall")}),
        object("failure", {value("max_density_error")})});
 }
 

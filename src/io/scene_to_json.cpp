@@ -71,6 +71,7 @@ json fluidToJson(const FluidDesc& fluid) {
 
 json wallToJson(const WallDesc& wall) {
   json w = json::object();
+  w["name"] = wall.name;
   w["type"] = nameOf(wall.kind, kWallKindNames);
   w["layers"] = wall.layers;
   const char* fluid = nameOf(wall.fluid, kFluidSideNames);
@@ -175,7 +176,8 @@ json probeToJson(const ProbeDesc& p) {
           {"position", toJson(p.position)},
           {"from", toJson(p.from)},
           {"to", toJson(p.to)},
-          {"object", p.object}};
+          {"object", p.object},
+          {"wall", p.wall}};
 }
 
 }  // namespace

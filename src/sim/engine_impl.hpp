@@ -159,6 +159,13 @@ class EngineImpl final : public FluidEngine {
     B::download(boundary_.position, w.position.data(), boundary_.count);
     return w;
   }
+  std::vector<Vec4> wallForces() override {
+    wallForce_.resize(boundary_.count);
+    fluid::wallForces(fluid_, grid_, boundary_, params_, wallForce_.data());
+    std::vector<Vec4> out(boundary_.count);
+    B::download(wallForce_, out.data(), boundary_.count);
+    return out;
+  }
   std::vector<PointSums> samplePoints(const std::vector<Vec3>& points) override {
     const std::size_t n = points.size();
     std::vector<Vec4> at(n);
@@ -198,6 +205,7 @@ class EngineImpl final : public FluidEngine {
   fluid::BoundaryParticles<B> objectBoundary_;  // the objects', with boundary coupling
   interaction::ContainmentState<B> containment_;
   typename B::template Buffer<Vec4> probePoints_;
+  typename B::template Buffer<Vec4> wallForce_;
   typename B::template Buffer<PointSums> probeSums_;
 };
 

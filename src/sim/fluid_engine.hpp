@@ -98,6 +98,9 @@ class FluidEngine {
   // them to pinned host memory while the next steps run; the CPU copies at once.
   virtual std::unique_ptr<PendingParticles> beginDownload() const = 0;
   virtual HostWalls downloadWalls() const = 0;
+  // The fluid's force on each wall particle this step, in downloadWalls' order
+  // (fluid/wall_forces.hpp): after the forces and the solves, before integrate.
+  virtual std::vector<Vec4> wallForces() = 0;
   // The fluid's sums at each point (the probes, core/probe.hpp), as a frame taken now shows it.
   virtual std::vector<PointSums> samplePoints(const std::vector<Vec3>& points) = 0;
   // The fluid into arrays in this backend's memory, for a renderer (target checked by the

@@ -40,8 +40,11 @@ ProbeSampler::ProbeSampler(const Scene& scene, double spacing) : rate_(scene.out
         break;
       }
       case ProbeKind::Force:
+        p.onWall = !desc.wall.empty();
         for (std::size_t o = 0; o < scene.objects.size(); ++o)
-          if (scene.objects[o].name == desc.object) p.object = o;
+          if (!p.onWall && scene.objects[o].name == desc.object) p.object = o;
+        for (std::size_t w = 0; w < scene.walls.size(); ++w)
+          if (p.onWall && scene.walls[w].name == desc.wall) p.object = w;
         for (const char* column : {"_fx_N", "_fy_N", "_fz_N"}) columns_.push_back(name + column);
         break;
     }
@@ -50,7 +53,8 @@ ProbeSampler::ProbeSampler(const Scene& scene, double spacing) : rate_(scene.out
 }
 
 std::vector<double> ProbeSampler::values(const std::vector<PointSums>& sums,
-                                         const std::vector<Vec3>& objectForce) const {
+                                         const std::vector<Vec3>& objectForce,
+                                         const std::vector<Vec3>& wallForce) const {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> out;
   out.reserve(columns_.size());
@@ -70,7 +74,8 @@ std::vector<double> ProbeSampler::values(const std::vector<PointSums>& sums,
         out.push_back(levelAlong(filled.data(), int(p.pointCount), p.step));
         break;
       case ProbeKind::Force: {
-        const Vec3 f = p.object < objectForce.size() ? objectForce[p.object] : Vec3{0, 0, 0};
+        const std::vector<Vec3>& forces = p.onWall ? wallForce : objectForce;
+        const Vec3 f = p.object < forces.size() ? forces[p.object] : Vec3{0, 0, 0};
         out.insert(out.end(), {double(f.x), double(f.y), double(f.z)});
         break;
       }
@@ -80,9 +85,10 @@ std::vector<double> ProbeSampler::values(const std::vector<PointSums>& sums,
 }
 
 void ProbeSampler::record(double t, const std::vector<PointSums>& sums,
-                          const std::vector<Vec3>& objectForce) {
+                          const std::vector<Vec3>& objectForce,
+                          const std::vector<Vec3>& wallForce) {
   if (probes_.empty()) return;
-  const std::vector<double> now = values(sums, objectForce);
+  const std::vector<double> now = values(sums, objectForce, wallForce);
   for (;;) {
     const double sampleTime = double(nextSample_) / rate_;
     // A sample time that the state's time rounds onto counts as reached.

@@ -26,9 +26,11 @@ class ProbeSampler {
   // "<probe>_<quantity>_<unit>", in the order of each row's values.
   const std::vector<std::string>& columns() const { return columns_; }
 
-  // The state at time t: the fluid's sums at points() and the fluid's force on each object.
-  // Adds the rows due since the last state up to t.
-  void record(double t, const std::vector<PointSums>& sums, const std::vector<Vec3>& objectForce);
+  // The state at time t: the fluid's sums at points() and the fluid's force on each object and
+  // each wall (empty when no probe reads a wall). Adds the rows due since the last state up to
+  // t.
+  void record(double t, const std::vector<PointSums>& sums, const std::vector<Vec3>& objectForce,
+              const std::vector<Vec3>& wallForce);
   // The rows added since the last call.
   std::vector<ProbeRow> take();
 
@@ -39,9 +41,11 @@ class ProbeSampler {
     std::size_t pointCount = 0;
     float step = 0.0f;       // Level: between its points, m
     std::size_t object = 0;  // Force
+    bool onWall = false;     // Force: `object` indexes the walls
   };
   std::vector<double> values(const std::vector<PointSums>& sums,
-                             const std::vector<Vec3>& objectForce) const;
+                             const std::vector<Vec3>& objectForce,
+                             const std::vector<Vec3>& wallForce) const;
 
   std::vector<Probe> probes_;
   std::vector<Vec3> points_;

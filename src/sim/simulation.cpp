@@ -31,11 +31,12 @@ void Simulation::step(double until) {
   profile.timeStep = timedMs([&] { s.dt = s.chooseTimeStep(until); });
   profile.densitySolve = timedMs([&] { s.solveDensity(); });
   profile.interaction += timedMs([&] { s.collectObjectForces(); });
+  profile.probes = timedMs([&] { s.collectWallForces(); });
   profile.integrate = timedMs([&] { s.clamped += engine.integrate(float(s.dt)); });
   profile.objects = timedMs([&] { s.advanceObjects(); });
   s.time = (s.dt == until - s.time) ? until : s.time + s.dt;
   ++s.steps;
-  profile.probes = timedMs([&] { s.sampleProbes(); });
+  profile.probes += timedMs([&] { s.sampleProbes(); });
 }
 
 void Simulation::setExternalAcceleration(const std::vector<float>& byId) {

@@ -65,7 +65,9 @@ struct Simulation::Impl {
   float objectMaxSpeed = 0.0f;
   std::uint64_t contactPairs = 0;
   sim::HostObjectForces objectForces;
-  std::vector<Vec3> fluidForceOnObject;  // by object, last step
+  std::vector<Vec3> fluidForceOnObject;     // by object, last step
+  std::vector<Vec3> fluidForceOnWall;       // by wall, last step; only when a probe asks
+  std::vector<std::size_t> wallOfParticle;  // in the engine's wall order
   std::unique_ptr<sim::ProbeSampler> probes;
   // The incompressible solver's last solves, and its counts since the start.
   fluid::SolverReport divergenceReport;
@@ -110,6 +112,7 @@ struct Simulation::Impl {
       objects = std::make_unique<sim::ObjectRunner>(std::move(*world), scene.objectEngine.rate,
                                                     scene.objectEngine.ownThread);
     }
+    if (probesWallForces()) mapWallParticles(walls);
     // Density and pressure of the initial state, so stats and frame 0 are meaningful.
     removed += engine->buildGrid();
     engine->computeDensityAndPressure();
@@ -120,7 +123,40 @@ struct Simulation::Impl {
   // The probes read the state as it is now (sim/probes.hpp).
   void sampleProbes() {
     if (probes->empty()) return;
-    probes->record(time, engine->samplePoints(probes->points()), fluidForceOnObject);
+    probes->record(time, engine->samplePoints(probes->points()), fluidForceOnObject,
+                   fluidForceOnWall);
+  }
+
+  bool probesWallForces() const {
+    for (const ProbeDesc& p : scene.probes)
+      if (p.kind == ProbeKind::Force && !p.wall.empty()) return true;
+    return false;
+  }
+  void mapWallParticles(const sim::Walls& walls) {
+    const sim::HostWalls host = engine->downloadWalls();
+    const std::vector<std::size_t>& first = walls.firstParticle();
+    wallOfParticle.resize(host.id.size());
+    for (std::size_t k = 0; k < host.id.size(); ++k) {
+      const std::size_t sampled = host.id[k] - initialFluid;  // wall ids follow the fluid's
+      wallOfParticle[k] =
+          std::size_t(std::upper_bound(first.begin(), first.end(), sampled) - first.begin()) - 1;
+    }
+    fluidForceOnWall.assign(scene.walls.size(), Vec3{0, 0, 0});
+  }
+  // The fluid's force on each wall this step, summed in the engine's wall order (the same for
+  // any thread count); only for force probes on walls, which pay a pass over the walls.
+  void collectWallForces() {
+    if (wallOfParticle.empty()) return;
+    const std::vector<Vec4> force = engine->wallForces();
+    std::vector<double> sum(3 * fluidForceOnWall.size(), 0.0);
+    for (std::size_t k = 0; k < force.size(); ++k) {
+      double* s = &sum[3 * wallOfParticle[k]];
+      s[0] += force[k].x;
+      s[1] += force[k].y;
+      s[2] += force[k].z;
+    }
+    for (std::size_t w = 0; w < fluidForceOnWall.size(); ++w)
+      fluidForceOnWall[w] = Vec3{float(sum[3 * w]), float(sum[3 * w + 1]), float(sum[3 * w + 2])};
   }
 
   // Contacts are found through the fluid's grid (cell edge h) from the object particles.

@@ -220,9 +220,11 @@ Walls::Walls(const Scene& scene) : solids_(std::make_unique<Solids>()) {
     const WallContext context{scene, scene.sourcePath + ": walls[" + std::to_string(i) + "]",
                               spacing};
     Sampled wall = sampleWall(context, scene.walls[i]);
+    firstParticle_.push_back(solids_->particles.size());
     solids_->particles.insert(solids_->particles.end(), wall.points.begin(), wall.points.end());
     if (wall.solid) solids_->tests.push_back(std::move(wall.solid));
   }
+  firstParticle_.push_back(solids_->particles.size());
   particles_.reserve(solids_->particles.size());
   for (const DVec3& p : solids_->particles) particles_.push_back(toF(p));
   solids_->clearance = 0.75 * spacing;

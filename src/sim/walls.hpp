@@ -22,6 +22,8 @@ class Walls {
   Walls& operator=(Walls&&) noexcept;
 
   const std::vector<Vec3>& particles() const { return particles_; }
+  // Wall w's particles are [firstParticle()[w], firstParticle()[w + 1]) of particles().
+  const std::vector<std::size_t>& firstParticle() const { return firstParticle_; }
 
   // Removes the points that lie on a wall's solid side (inside an obstacle, outside a closed
   // container) or nearer than 3/4 of a spacing to a wall particle, where a fluid particle would
@@ -31,6 +33,7 @@ class Walls {
  private:
   struct Solids;
   std::vector<Vec3> particles_;
+  std::vector<std::size_t> firstParticle_;
   std::unique_ptr<Solids> solids_;
 };
 

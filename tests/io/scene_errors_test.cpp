@@ -214,8 +214,8 @@ TEST(SceneErrors, BoxesMustLieInsideTheDomain) {
 TEST(SceneErrors, BadWallsNameTheKey) {
   // Each type reads its own keys; another type's key is refused, not ignored.
   EXPECT_EQ(parseError(with(completeSceneJson(), "/walls/2/min", {0, 0, 0})),
-            "scenes/x.json: walls[2].min: not a key of a sphere wall; its keys are type, layers, "
-            "center, radius, fluid");
+            "scenes/x.json: walls[2].min: not a key of a sphere wall; its keys are name, type, "
+            "layers, center, radius, fluid");
   EXPECT_EQ(parseError(without(completeSceneJson(), "/walls/2/radius")),
             "scenes/x.json: walls[2].radius: required key is missing (a length in m)");
   expectContains(parseError(with(completeSceneJson(), "/walls/3/radius", 0.001)),
@@ -227,6 +227,14 @@ TEST(SceneErrors, BadWallsNameTheKey) {
                   "walls[4].edge1 [0.3, 0.2, 0], got [0.6, 0.4, 0]"});
   expectContains(parseError(with(completeSceneJson(), "/walls/2/center", {3, 0, 0})),
                  {"scenes/x.json: walls[2].center: expected a point inside the domain box"});
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/walls/2/name", "crate")),
+            "scenes/x.json: walls[2].name: expected a name no other wall has, got \"crate\" "
+            "(also walls[1])");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/probes/3/wall", "lid")),
+            "scenes/x.json: probes[3].wall: expected the name of a wall (wall0, crate, wall2, "
+            "wall3, wall4, wall5), got \"lid\"");
+  expectContains(parseError(with(completeSceneJson(), "/probes/3/object", "vessel")),
+                 {"scenes/x.json: probes[3].wall: expected an object or a wall, not both"});
   EXPECT_EQ(parseError(without(completeSceneJson(), "/walls/5/file")),
             "scenes/x.json: walls[5].file: expected the path of an OBJ or STL file");
 }

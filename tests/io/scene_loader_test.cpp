@@ -70,6 +70,8 @@ TEST(SceneLoader, CompleteSceneSetsEveryField) {
   EXPECT_EQ(scene.walls[0].box.max, (Vec3d{1.4, 1.0, 0.25}));
   EXPECT_EQ(scene.walls[0].layers, 3);
   EXPECT_TRUE(scene.walls[0].closed);
+  EXPECT_EQ(scene.walls[0].name, "wall0");
+  EXPECT_EQ(scene.walls[1].name, "crate");
   EXPECT_EQ(scene.walls[1].kind, WallKind::Box);
   EXPECT_EQ(scene.walls[1].fluid, FluidSide::Inside);
   EXPECT_EQ(scene.walls[1].layers, 1);
@@ -124,7 +126,7 @@ TEST(SceneLoader, CompleteSceneSetsEveryField) {
   EXPECT_EQ(scene.output.fps, 60.0);
   EXPECT_EQ(scene.output.format, FrameFormat::Ply);
   EXPECT_EQ(scene.output.probeRate, 250.0);
-  ASSERT_EQ(scene.probes.size(), 3u);
+  ASSERT_EQ(scene.probes.size(), 4u);
   EXPECT_EQ(scene.probes[0].name, "sensor");
   EXPECT_EQ(scene.probes[0].kind, ProbeKind::Point);
   EXPECT_EQ(scene.probes[0].position, (Vec3d{1.4, 0.05, 0}));
@@ -133,6 +135,8 @@ TEST(SceneLoader, CompleteSceneSetsEveryField) {
   EXPECT_EQ(scene.probes[1].to, (Vec3d{0.5, 1, 0}));
   EXPECT_EQ(scene.probes[2].kind, ProbeKind::Force);
   EXPECT_EQ(scene.probes[2].object, "vessel");
+  EXPECT_EQ(scene.probes[3].wall, "crate");
+  EXPECT_EQ(scene.probes[3].object, "");
   EXPECT_EQ(scene.failure.maxDensityError, 0.2);
 }
 
@@ -231,7 +235,7 @@ void expectEveryKey(const json& value, const KeySchema& schema, const std::strin
     std::vector<std::string> keys;
     for (const auto& named : kWallKindNames)
       if (value["type"] == named.name) keys = wallKeys(named.value);
-    keys.insert(keys.end(), {"type", "layers"});
+    keys.insert(keys.end(), {"name", "type", "layers"});
     for (const std::string& key : keys)
       EXPECT_TRUE(value.contains(key)) << joinKey(path, key) << " is not written";
     EXPECT_EQ(value.size(), keys.size()) << path << " has keys of another type of wall";

@@ -49,7 +49,8 @@ inline nlohmann::json completeSceneJson() {
     },
     "walls": [{"type": "tank", "min": [0, 0, -0.15], "max": [1.4, 1.0, 0.25], "layers": 3,
                "closed": true},
-              {"type": "box", "min": [0.6, 0, -0.05], "max": [0.7, 0.1, 0.05], "fluid": "inside",
+              {"name": "crate", "type": "box", "min": [0.6, 0, -0.05], "max": [0.7, 0.1, 0.05],
+               "fluid": "inside",
                "layers": 1},
               {"type": "sphere", "center": [0.3, 0.5, 0], "radius": 0.1, "fluid": "inside"},
               {"type": "cylinder", "center": [1, 0.5, 0], "radius": 0.05, "length": 0.3,
@@ -76,7 +77,8 @@ inline nlohmann::json completeSceneJson() {
     "output": {"fps": 60, "format": "ply", "probe_rate": 250},
     "probes": [{"name": "sensor", "type": "point", "position": [1.4, 0.05, 0]},
                {"name": "gauge", "type": "level", "from": [0.5, 0, 0], "to": [0.5, 1, 0]},
-               {"name": "on_vessel", "type": "force", "object": "vessel"}],
+               {"name": "on_vessel", "type": "force", "object": "vessel"},
+               {"name": "on_crate", "type": "force", "wall": "crate"}],
     "failure": {"max_density_error": 0.2}
   })");
 }
@@ -139,6 +141,7 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
   for (std::size_t i = 0; i < a.walls.size(); ++i) {
     const WallDesc& wa = a.walls[i];
     const WallDesc& wb = b.walls[i];
+    EXPECT_EQ(wa.name, wb.name);
     EXPECT_EQ(wa.kind, wb.kind);
     expectBoxesEqual(wa.box, wb.box);
     EXPECT_EQ(wa.layers, wb.layers);
@@ -203,6 +206,7 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.probes[i].from, b.probes[i].from);
     EXPECT_EQ(a.probes[i].to, b.probes[i].to);
     EXPECT_EQ(a.probes[i].object, b.probes[i].object);
+    EXPECT_EQ(a.probes[i].wall, b.probes[i].wall);
   }
   EXPECT_EQ(a.failure.maxDensityError, b.failure.maxDensityError);
 }

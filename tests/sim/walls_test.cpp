@@ -464,5 +464,69 @@ TEST_P(WallsHoldWater, AtRestAtRhoGHForTwoSecondsLosingNothing) {
 
 SPH_ON_EVERY_BACKEND(WallsHoldWater);
 
+// A force probe on a wall reads the fluid's push on it: at rest, a tank carries the weight of
+// its water, and a box on the floor under water the weight of the column above its top.
+class WallForceProbes : public ::testing::TestWithParam<Backend> {};
+
+TEST_P(WallForceProbes, WeighTheWaterAtRest) {
+  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
+  for (FluidSolver solver : {FluidSolver::Wcsph, FluidSolver::Dfsph}) {
+    SCOPED_TRACE(solver == FluidSolver::Wcsph ? "wcsph" : "dfsph");
+    Scene s = emptyScene();
+    s.walls.push_back(WallDesc::tank({{0, 0, 0}, {0.2, 0.2, 0.1}}));
+    s.walls[0].name = "tank";
+    WallDesc box;
+    box.name = "box";
+    box.kind = WallKind::Box;
+    box.box = {{0.05, 0, 0}, {0.15, 0.05, 0.1}};
+    s.walls.push_back(box);
+    s = withWater(s, {{0, 0, 0}, {0.2, 0.12, 0.1}});
+    s.fluid.solver = solver;
+    for (const char* wall : {"tank", "box"}) {
+      ProbeDesc force;
+      force.name = wall;
+      force.kind = ProbeKind::Force;
+      force.wall = wall;
+      s.probes.push_back(force);
+    }
+    ProbeDesc gauge;
+    gauge.name = "surface";
+    gauge.kind = ProbeKind::Level;
+    gauge.from = {0.1, 0.05, 0.05};
+    gauge.to = {0.1, 0.2, 0.05};
+    s.probes.push_back(gauge);
+    Simulation sim(s, testing::on(GetParam()));
+    sim.advanceTo(1.5);
+    sim.takeProbeRows();
+    sim.advanceTo(2.0);
+    const std::vector<ProbeRow> rows = sim.takeProbeRows();
+    ASSERT_EQ(rows.size(), 50u);
+    const std::vector<std::string>& columns = sim.probeColumns();
+    const auto mean = [&](const std::string& column) {
+      const std::size_t c =
+          std::size_t(std::find(columns.begin(), columns.end(), column) - columns.begin());
+      double sum = 0.0;
+      for (const ProbeRow& row : rows) sum += row.values.at(c) / double(rows.size());
+      return sum;
+    };
+    const double weight = double(sim.fluidCount()) * sim.calibration().mass * 9.81;
+    // The walls together carry all of it; the tank's own share is what the box does not.
+    const Vec3d onTank{mean("tank_fx_N"), mean("tank_fy_N"), mean("tank_fz_N")};
+    const Vec3d onBox{mean("box_fx_N"), mean("box_fy_N"), mean("box_fz_N")};
+    EXPECT_NEAR(onTank[1] + onBox[1], -weight, 0.02 * weight);
+    for (int axis : {0, 2}) EXPECT_NEAR(onTank[axis] + onBox[axis], 0.0, 0.01 * weight);
+    // The gauge stands on the box's top (0.1 × 0.1 m): it reads the depth over it.
+    const double column = 1000.0 * 9.81 * mean("surface_level_m") * 0.1 * 0.1;
+    EXPECT_NEAR(onBox[1], -column, 0.05 * column);
+    EXPECT_NEAR(onBox[0], 0.0, 0.05 * column);
+    std::printf(
+        "  weight %.3f N: tank (%.3f, %.3f, %.3f) N, box (%.3f, %.3f, %.3f) N, column "
+        "over the box %.3f N\n",
+        weight, onTank[0], onTank[1], onTank[2], onBox[0], onBox[1], onBox[2], column);
+  }
+}
+
+SPH_ON_EVERY_BACKEND(WallForceProbes);
+
 }  // namespace
 }  // namespace sph
