@@ -2,7 +2,10 @@
 
 #include <imgui.h>
 
+#include <cfloat>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "colour_map.hpp"
 #include "sph/error.hpp"
@@ -127,6 +130,23 @@ void parameters(Simulation& sim, ViewerState& state) {
   }
 }
 
+// Each probe's latest reading, and the pressures, levels and forces over the last rows.
+void probes(const ProbeReadings& readings) {
+  ImGui::Text("at t = %.3f s", readings.latestTime());
+  for (std::size_t c = 0; c < readings.columns().size(); ++c) {
+    const std::vector<float>& h = readings.history(c);
+    const std::string& name = readings.columns()[c];
+    char value[32] = "-";
+    if (!h.empty()) std::snprintf(value, sizeof value, "%.4g", double(h.back()));
+    if (ProbeReadings::plotted(name) && !h.empty()) {
+      ImGui::PlotLines(name.c_str(), h.data(), int(h.size()), 0, value, FLT_MAX, FLT_MAX,
+                       ImVec2(0.0f, 36.0f));
+    } else {
+      ImGui::Text("%s  %s", name.c_str(), value);
+    }
+  }
+}
+
 }  // namespace
 
 void smooth(StepProfile& into, const StepProfile& latest, double w) {
@@ -149,6 +169,9 @@ void drawPanel(Simulation& sim, ViewerState& state, const render::ValueRange& co
   if (ImGui::CollapsingHeader("view", ImGuiTreeNodeFlags_DefaultOpen))
     drawSettings(state, colourRange);
   if (ImGui::CollapsingHeader("parameters", ImGuiTreeNodeFlags_DefaultOpen)) parameters(sim, state);
+  if (!state.probes.columns().empty() &&
+      ImGui::CollapsingHeader("probes", ImGuiTreeNodeFlags_DefaultOpen))
+    probes(state.probes);
   ImGui::TextDisabled("left drag: turn   right drag: pan   wheel: zoom");
   if (state.probe) ImGui::TextDisabled("ctrl + left drag: move the probe sphere");
   if (!state.message.empty()) {

@@ -178,6 +178,7 @@ void advance(Simulation& sim, ViewerState& state, double wallSeconds) {
     state.paused = true;
     state.message = std::string(failure.what()) + " (r resets)";
   }
+  state.probes.add(sim.takeProbeRows());
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   if (wall > 0.0) {
     const double factor = (sim.time() - before) / std::max(wall, wallSeconds);
@@ -210,6 +211,7 @@ void runViewer(const Scene& original, const ViewOptions& options) {
 
   ViewerState state;
   state.fluidPath = feed.path();
+  state.probes.reset(sim->probeColumns());
   state.draw.colour = *mode;
   state.probe = probe.present;
   state.draw.show.boundary = false;  // walls hide the fluid; b shows them
@@ -230,6 +232,7 @@ void runViewer(const Scene& original, const ViewOptions& options) {
       state.framesPerSecond += 0.1 * (1.0 / wallSeconds - state.framesPerSecond);
     if (state.resetRequested) {
       sim = std::make_unique<Simulation>(scene, options.simulation);
+      state.probes.reset(sim->probeColumns());
       state.resetRequested = false;
       state.message.clear();
     }

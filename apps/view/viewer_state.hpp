@@ -4,6 +4,7 @@
 #include <string>
 
 #include "particle_renderer.hpp"
+#include "probe_readings.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::view {
@@ -17,6 +18,7 @@ struct ViewerState {
   std::string message;     // the last error, shown in the panel until the next reset
   std::string fluidPath;   // how the fluid reaches the renderer (FluidFeed::path)
   LiveParameters editing;  // the panel's fields while the user edits them
+  ProbeReadings probes;    // the scene's probes, as sampled
 
   // Smoothed over the last frames, for steady figures.
   StepProfile profile;          // ms per step, by stage

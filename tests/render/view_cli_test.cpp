@@ -49,7 +49,9 @@ TEST(ViewCli, OpensUnderXvfbRunsAndWritesAScreenshotShowingTheFluid) {
     "domain": {"min": [0, 0, 0], "max": [0.1, 0.1, 0.1]},
     "fluid": {"spacing": 0.005, "blocks": [{"min": [0, 0, 0], "max": [0.1, 0.04, 0.1]}]},
     "walls": [{"type": "tank", "min": [0, 0, 0], "max": [0.1, 0.1, 0.1]}],
-    "time": {"duration": 1.0}
+    "time": {"duration": 1.0},
+    "probes": [{"name": "floor", "type": "point", "position": [0.05, 0.01, 0.05]},
+               {"name": "gauge", "type": "level", "from": [0.05, 0, 0.05], "to": [0.05, 0.1, 0.05]}]
   })";
   const fs::path shot = dir / "view.png";
   const fs::path log = dir / "view.log";
