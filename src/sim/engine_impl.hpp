@@ -159,9 +159,12 @@ class EngineImpl final : public FluidEngine {
     B::download(boundary_.position, w.position.data(), boundary_.count);
     return w;
   }
+  void watchWalls(const std::vector<std::uint8_t>& watched) override {
+    B::upload(watchedWall_, watched.data(), watched.size());
+  }
   std::vector<Vec4> wallForces() override {
     wallForce_.resize(boundary_.count);
-    fluid::wallForces(fluid_, grid_, boundary_, params_, wallForce_.data());
+    fluid::wallForces(fluid_, grid_, boundary_, params_, watchedWall_.data(), wallForce_.data());
     std::vector<Vec4> out(boundary_.count);
     B::download(wallForce_, out.data(), boundary_.count);
     return out;
@@ -206,6 +209,7 @@ class EngineImpl final : public FluidEngine {
   interaction::ContainmentState<B> containment_;
   typename B::template Buffer<Vec4> probePoints_;
   typename B::template Buffer<Vec4> wallForce_;
+  typename B::template Buffer<std::uint8_t> watchedWall_;
   typename B::template Buffer<PointSums> probeSums_;
 };
 

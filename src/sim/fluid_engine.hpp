@@ -98,7 +98,10 @@ class FluidEngine {
   // them to pinned host memory while the next steps run; the CPU copies at once.
   virtual std::unique_ptr<PendingParticles> beginDownload() const = 0;
   virtual HostWalls downloadWalls() const = 0;
-  // The fluid's force on each wall particle this step, in downloadWalls' order
+  // Which wall particles wallForces measures (1) and which it leaves at zero, in
+  // downloadWalls' order: only the walls a probe reads pay the pass.
+  virtual void watchWalls(const std::vector<std::uint8_t>& watched) = 0;
+  // The fluid's force on each watched wall particle this step, in downloadWalls' order
   // (fluid/wall_forces.hpp): after the forces and the solves, before integrate.
   virtual std::vector<Vec4> wallForces() = 0;
   // The fluid's sums at each point (the probes, core/probe.hpp), as a frame taken now shows it.

@@ -142,9 +142,15 @@ struct Simulation::Impl {
           std::size_t(std::upper_bound(first.begin(), first.end(), sampled) - first.begin()) - 1;
     }
     fluidForceOnWall.assign(scene.walls.size(), Vec3{0, 0, 0});
+    std::vector<std::uint8_t> probed(scene.walls.size(), 0), watched(host.id.size(), 0);
+    for (const ProbeDesc& p : scene.probes)
+      for (std::size_t w = 0; w < scene.walls.size(); ++w)
+        if (p.kind == ProbeKind::Force && p.wall == scene.walls[w].name) probed[w] = 1;
+    for (std::size_t k = 0; k < watched.size(); ++k) watched[k] = probed[wallOfParticle[k]];
+    engine->watchWalls(watched);
   }
-  // The fluid's force on each wall this step, summed in the engine's wall order (the same for
-  // any thread count); only for force probes on walls, which pay a pass over the walls.
+  // The fluid's force on each probed wall this step, summed in the engine's wall order (the
+  // same for any thread count); a pass over the probed walls' particles.
   void collectWallForces() {
     if (wallOfParticle.empty()) return;
     const std::vector<Vec4> force = engine->wallForces();
