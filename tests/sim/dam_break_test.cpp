@@ -80,6 +80,7 @@ void expectFrontFollowsMartinAndMoyce(Backend backend, FluidSolver solver) {
     const double tolerance = p.T < 0.8 ? 0.12 : 0.10;
     EXPECT_LT(std::abs(error), tolerance)
         << "T = " << p.T << ": Z = " << Z << ", experiment " << p.Z;
+    std::printf("    T %.2f: Z %.3f, experiment %.2f (%+.1f %%)\n", p.T, Z, p.Z, 100.0 * error);
     sumError += std::abs(error);
     largestError = std::max(largestError, std::abs(error));
     ++compared;
