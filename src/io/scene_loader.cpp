@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/json_input.hpp"
 #include "io/scene_overrides.hpp"
 #include "io/scene_reader.hpp"
 #include "io/scene_schema.hpp"
@@ -501,15 +502,6 @@ void checkGeometry(const ReadContext& context, const Scene& scene) {
     checkWall(context, scene.walls[i], joinIndex("walls", i), scene);
 }
 
-// nlohmann's messages start with "[json.exception.parse_error.101] "; the rest is for people.
-std::string withoutExceptionTag(const std::string& message) {
-  if (message.rfind("[json.exception.", 0) == 0) {
-    const std::size_t end = message.find("] ");
-    if (end != std::string::npos) return message.substr(end + 2);
-  }
-  return message;
-}
-
 }  // namespace
 
 Scene parseScene(const json& document, const std::string& sourceName,
@@ -518,8 +510,10 @@ Scene parseScene(const json& document, const std::string& sourceName,
     throw InputError(sourceName + ": expected a JSON object at the top level, got " +
                      describeValue(document));
   }
+  checkJsonDepth(document, sourceName);  // before anything copies or prints it
   json resolved = document;
   std::vector<AppliedOverride> applied = applyOverrides(resolved, overrides, sourceName);
+  checkJsonDepth(resolved, sourceName);
   const ReadContext context(sourceName, std::move(applied));
   const ObjectReader root(context, &resolved, "", sceneSchema());
 
@@ -558,13 +552,7 @@ Scene loadScene(const std::filesystem::path& file, const std::vector<std::string
   }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(name + ": cannot open the scene file for reading");
-  json document;
-  try {
-    document = json::parse(in);
-  } catch (const json::exception& e) {  // parse_error, or out_of_range for 1e999
-    throw InputError(name + ": invalid JSON: " + withoutExceptionTag(e.what()));
-  }
-  return parseScene(document, name, overrides);
+  return parseScene(parseJson(in, name), name, overrides);
 }
 
 }  // namespace sph::io

@@ -1,10 +1,13 @@
 #include "io/scene_overrides.hpp"
 
+#include "io/json_input.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
 #include <optional>
 
+#include "io/json_input.hpp"
 #include "io/scene_reader.hpp"
 #include "io/scene_schema.hpp"
 #include "sph/error.hpp"
@@ -21,14 +24,23 @@ struct KeyStep {
   bool intoVector = false;  // an index into an array of numbers, whose length is fixed
 };
 
+// "--set fluid.spacing=x", shortened past 80 characters: a message quotes, not dumps.
+std::string quoted(const std::string& text) {
+  constexpr std::size_t kLongest = 80;
+  return "--set " + (text.size() > kLongest ? text.substr(0, kLongest - 3) + "..." : text);
+}
+
 class OverrideError {
  public:
   OverrideError(const std::string& sourceName, const std::string& text)
-      : prefix_(sourceName + ": --set " + text + ": ") {}
-  [[noreturn]] void fail(const std::string& problem) const { throw InputError(prefix_ + problem); }
+      : where_(sourceName + ": " + quoted(text)) {}
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw InputError(where_ + ": " + problem);
+  }
+  const std::string& where() const { return where_; }
 
  private:
-  std::string prefix_;
+  std::string where_;
 };
 
 std::string trim(const std::string& s) {
@@ -139,8 +151,8 @@ std::vector<AppliedOverride> applyOverrides(json& document,
 
     std::string keyPath;
     const std::vector<KeyStep> steps = resolveKey(key, error, keyPath);
-    json value = json::parse(valueText, nullptr, /*allow_exceptions=*/false);
-    if (value.is_discarded()) value = valueText;  // `output.format=ply` needs no quotes
+    std::optional<json> parsed = parseJsonIfValid(valueText, error.where());
+    json value = parsed ? std::move(*parsed) : json(valueText);  // `format=ply` needs no quotes
     store(document, steps, std::move(value), error);
 
     // This value replaces whatever earlier overrides put at or below the same key.

@@ -275,9 +275,10 @@ class SceneFile : public ::testing::Test {
     return file;
   }
 
-  std::string loadError(const std::filesystem::path& file) {
+  std::string loadError(const std::filesystem::path& file,
+                        const std::vector<std::string>& overrides = {}) {
     try {
-      loadScene(file);
+      loadScene(file, overrides);
     } catch (const InputError& e) {
       return e.what();
     }
@@ -328,6 +329,38 @@ TEST_F(SceneFile, NumberTooLargeForADouble) {
   const std::string message = loadError(file);
   EXPECT_EQ(message.rfind(file.string() + ": invalid JSON: ", 0), 0u) << message;
   EXPECT_NE(message.find("1e999"), std::string::npos) << message;
+}
+
+// JSON nested 60,000 deep once overflowed the stack while the loader copied and printed it.
+TEST_F(SceneFile, NestingNoSceneNeedsIsRefusedWithoutRecursing) {
+  const std::string deep = std::string(60000, '[') + std::string(60000, ']');
+  const auto file = write("deep.json", R"({"name": "x", "description": )" + deep + "}");
+  EXPECT_EQ(loadError(file), file.string() +
+                                 ": JSON nested deeper than 32 levels; no scene needs more than "
+                                 "a few");
+  // Also through --set, and in a document built elsewhere.
+  const auto fine = write("fine.json", minimalSceneJson().dump());
+  EXPECT_EQ(loadError(fine, {"description=" + deep}),
+            fine.string() + ": --set description=" + std::string(65, '[') +
+                "...: JSON nested deeper than 32 levels; no scene needs more than a few");
+  json document = minimalSceneJson();
+  document["description"] = json::parse(std::string(100, '[') + std::string(100, ']'));
+  EXPECT_EQ(scene_test::parseError(document),
+            "scenes/x.json: JSON nested deeper than 32 levels; no scene needs more than a few");
+}
+
+// The last of two values used to win silently.
+TEST_F(SceneFile, AKeyGivenTwiceIsAnError) {
+  const auto file = write("twice.json", R"({"domain": {"min": [0, 0, 0], "max": [1, 1, 1]},
+    "fluid": {"spacing": 0.01, "blocks": [{"min": [0, 0, 0], "max": [1, 1, 1]},
+                                          {"min": [0, 0, 0], "max": [1, 1, 1], "min": [0, 0, 0]}],
+              "spacing": 0.02}})");
+  EXPECT_EQ(loadError(file),
+            file.string() + ": fluid.blocks[1].min: the key appears twice in one object");
+  const auto fine = write("fine.json", minimalSceneJson().dump());
+  EXPECT_EQ(loadError(fine, {R"(gravity={"a": 1, "a": 2})"}),
+            fine.string() +
+                R"(: --set gravity={"a": 1, "a": 2}: a: the key appears twice in one object)");
 }
 
 TEST_F(SceneFile, ValidationErrorsNameTheFile) {
