@@ -6,6 +6,9 @@
 #include "commands.hpp"
 #include "sph/error.hpp"
 
+// More threads than any machine sph runs on has cores; 20,000 took OpenMP a minute to start.
+constexpr int kMostThreads = 1024;
+
 int main(int argc, char** argv) {
   using namespace sph::cli;
   CLI::App app{"sph: real-time SPH fluids on the CPU (OpenMP) and NVIDIA GPUs"};
@@ -19,8 +22,8 @@ int main(int argc, char** argv) {
   runCmd->add_option("--out", run.out, "Output directory (default: out/<scene name>)");
   runCmd->add_option("--backend", run.backend, "cpu, cuda or auto")
       ->check(CLI::IsMember({"cpu", "cuda", "auto"}));
-  runCmd->add_option("--threads", run.threads, "CPU threads (default: all)")
-      ->check(CLI::NonNegativeNumber);
+  runCmd->add_option("--threads", run.threads, "CPU threads, at most 1024 (default: all)")
+      ->check(CLI::Range(0, kMostThreads));
   runCmd->add_option("--device", run.device, "CUDA device index (see sph info)")
       ->check(CLI::NonNegativeNumber);
   runCmd->add_option("--duration", duration, "Simulated seconds (time.duration)");
@@ -80,7 +83,8 @@ int main(int argc, char** argv) {
   viewCmd->add_option("scene", view.scene, "Scene file (JSON)")->required();
   viewCmd->add_option("--backend", view.backend, "cpu, cuda or auto")
       ->check(CLI::IsMember({"cpu", "cuda", "auto"}));
-  viewCmd->add_option("--threads", view.threads, "CPU threads (default: all)");
+  viewCmd->add_option("--threads", view.threads, "CPU threads, at most 1024 (default: all)")
+      ->check(CLI::Range(0, kMostThreads));
   viewCmd->add_option("--device", view.device, "CUDA device index (see sph info)")
       ->check(CLI::NonNegativeNumber);
   viewCmd->add_option("--set", view.overrides, "Override a scene key: dotted.key=value")
@@ -101,7 +105,8 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--sizes", bench.sizes, "Particle counts")->delimiter(',');
   benchCmd->add_option("--backend", bench.backend, "cpu, cuda or auto")
       ->check(CLI::IsMember({"cpu", "cuda", "auto"}));
-  benchCmd->add_option("--threads", bench.threads, "CPU threads (default: all)");
+  benchCmd->add_option("--threads", bench.threads, "CPU threads, at most 1024 (default: all)")
+      ->check(CLI::Range(0, kMostThreads));
   benchCmd->add_option("--device", bench.device, "CUDA device index (see sph info)")
       ->check(CLI::NonNegativeNumber);
   benchCmd->add_option("--warmup", bench.warmupSteps, "Steps before timing");

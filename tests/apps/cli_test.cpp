@@ -140,6 +140,12 @@ TEST_F(Cli, BadInputExitsTwoNamingFileAndKey) {
   EXPECT_EQ(runSph("run " + (dir_ / "missing.json").string()).code, 2);
   EXPECT_EQ(runSph("run " + scene_.string() + " --backend cuda").code, 2);
   EXPECT_EQ(runSph("validate " + scene_.string() + " --set fluid.spacing=-1").code, 2);
+  // 100,000 threads once crashed inside OpenMP.
+  const Result threads = runSph("run " + scene_.string() + " --out " + (dir_ / "threads").string() +
+                                " --threads 100000");
+  EXPECT_EQ(threads.code, 2);
+  EXPECT_NE(threads.output.find("--threads"), std::string::npos) << threads.output;
+  EXPECT_NE(threads.output.find("1024"), std::string::npos) << threads.output;
 }
 
 TEST_F(Cli, BlowUpExitsThreeKeepingWhatWasComputed) {
