@@ -58,7 +58,7 @@ DfsphDesc readDfsph(const ObjectReader& in) {
 FluidDesc readFluid(const ObjectReader& in) {
   FluidDesc fluid;
   fluid.restDensity = in.number("rest_density", fluid.restDensity, kPositive);
-  fluid.spacing = in.number("spacing", fluid.spacing, kPositive);
+  fluid.spacing = in.number("spacing", fluid.spacing, kSpacing);
   fluid.supportRatio = in.number("support_ratio", fluid.supportRatio, kSupportRatio);
   fluid.solver = in.choice("solver", fluid.solver, kSolverNames);
   fluid.dfsph = readDfsph(in.object("dfsph"));
@@ -204,6 +204,10 @@ std::vector<ObjectDesc> readObjects(const ObjectReader& root) {
     o.shape = readShape(in.requiredObject("shape"));
     o.density = in.number("density", o.density, kPositive);
     o.spacing = in.number("spacing", o.spacing, kNonNegative);
+    if (o.spacing != 0.0 && !kSpacing.accepts(o.spacing))
+      in.context().fail(in.keyPath("spacing"), "expected 0 (the fluid's) or " +
+                                                   kSpacing.describe() + ", got " +
+                                                   formatNumber(o.spacing));
     o.velocity = in.vec3("velocity", o.velocity);
     o.angularVelocity = in.vec3("angular_velocity", o.angularVelocity);
     o.deformable = readDeformable(in.object("deformable"));
@@ -363,20 +367,20 @@ CalibrationDesc readCalibration(const ObjectReader& in) {
 
 TimeDesc readTime(const ObjectReader& in) {
   TimeDesc time;
-  time.duration = in.number("duration", time.duration, kPositive);
+  time.duration = in.number("duration", time.duration, kDuration);
   time.cfl = in.number("cfl", time.cfl, kUnitStep);
   time.forceFactor = in.number("force_factor", time.forceFactor, kUnitStep);
   time.viscousFactor = in.number("viscous_factor", time.viscousFactor, kUnitStep);
-  time.maxDt = in.number("max_dt", time.maxDt, kPositive);
-  time.fixedDt = in.optionalNumber("fixed_dt", kPositive);
+  time.maxDt = in.number("max_dt", time.maxDt, kTimeStep);
+  time.fixedDt = in.optionalNumber("fixed_dt", kTimeStep);
   return time;
 }
 
 OutputDesc readOutput(const ObjectReader& in) {
   OutputDesc output;
-  output.fps = in.number("fps", output.fps, kPositive);
+  output.fps = in.number("fps", output.fps, kFrameRate);
   output.format = in.choice("format", output.format, kFormatNames);
-  output.probeRate = in.number("probe_rate", output.probeRate, kPositive);
+  output.probeRate = in.number("probe_rate", output.probeRate, kSampleRate);
   return output;
 }
 

@@ -58,6 +58,15 @@ inline constexpr NumberRule kNonNegative{0, kInfinity, false, true};
 inline constexpr NumberRule kClosedUnit{0, 1, false, false};  // [0, 1]
 inline constexpr NumberRule kUnitStep{0, 1, true, false};     // (0, 1]
 inline constexpr NumberRule kOpenUnit{0, 1, true, true};      // (0, 1)
+// Physical ranges, so that what validate accepts, run runs: a particle spacing from a micron to
+// 100 m (below, a lattice index overflows and nothing is sampled), a time step from a
+// nanosecond to 10 s (below, time stops advancing in double precision within a run), frames
+// and probe samples no faster than a camera or a sensor takes them.
+inline constexpr NumberRule kSpacing{1e-6, 100, false, false};
+inline constexpr NumberRule kTimeStep{1e-9, 10, false, false};
+inline constexpr NumberRule kDuration{0, 1e6, true, false};
+inline constexpr NumberRule kFrameRate{0, 1e5, true, false};
+inline constexpr NumberRule kSampleRate{0, 1e7, true, false};
 
 // Reads the keys of one JSON object. Constructing it checks that the value is an object and
 // that every key in it is in the schema. A reader of an absent object gives every default.

@@ -340,6 +340,12 @@ struct Simulation::Impl {
     const fluid::StepMeasures m = engine->measureStep();
     const float bound = static_cast<float>(scene.failure.maxDensityError);
     if (!m.finite || m.maxDensityError > bound) fail(bound);
+    // Ten times the speed of sound, or no fluid left at all: a blow-up the density bound did
+    // not catch (a fixed step too long for the stiffness), not a result.
+    const double speedLimit =
+        10.0 * std::max(calibration.soundSpeed, 10.0 * calibration.maxExpectedSpeed);
+    if (m.maxSpeed > speedLimit || (engine->fluidCount() == 0 && initialFluid > 0))
+      failRunaway(m, speedLimit);
     const TimeDesc& t = scene.time;
     double next =
         t.fixedDt
@@ -352,6 +358,10 @@ struct Simulation::Impl {
                    viscousTimeStep(t.viscousFactor, params.h, calibration.kinematicViscosity),
                    objects ? objectTimeStep() : HUGE_VAL, t.maxDt});
     const double remaining = until - time;
+    // Under a nanosecond (the shortest time.fixed_dt a scene may ask for) the fluid has blown
+    // up: its speeds or accelerations are beyond any scene's, and the run would crawl forever
+    // or, once the step no longer moves the clock, hang.
+    if (next < kShortestStep && next < remaining) failStalled(next, m);
     // Land exactly on `until` rather than leave a sliver of a step for later.
     if (next >= remaining)
       next = remaining;
@@ -371,6 +381,31 @@ struct Simulation::Impl {
     return std::min(contact, travel);
   }
 
+  static constexpr double kShortestStep = 1e-9;  // s
+  [[noreturn]] void failStalled(double dt, const fluid::StepMeasures& m) {
+    std::ostringstream message;
+    message << "simulation failed at step " << steps << " (t = " << time
+            << " s): the time step fell to " << dt << " s, under " << kShortestStep
+            << " s: the fastest particle moves at " << m.maxSpeed
+            << " m/s, the largest acceleration is " << m.maxAcceleration << " m/s^2";
+    throw SimulationFailure(message.str(), steps, 0, "time step");
+  }
+  [[noreturn]] void failRunaway(const fluid::StepMeasures& m, double speedLimit) {
+    std::ostringstream message;
+    message << "simulation failed at step " << steps << " (t = " << time << " s): ";
+    if (engine->fluidCount() == 0) {
+      message << "every fluid particle has left the domain (" << removed << " removed)";
+      throw SimulationFailure(message.str(), steps, 0, "fluid count");
+    }
+    const sim::HostParticles fluid = engine->download();  // once, on the way out
+    std::size_t fastest = 0;
+    for (std::size_t i = 1; i < fluid.id.size(); ++i)
+      if (lengthSquared(xyz(fluid.velocity[i])) > lengthSquared(xyz(fluid.velocity[fastest])))
+        fastest = i;
+    message << "particle " << fluid.id[fastest] << ": speed = " << m.maxSpeed
+            << " m/s, past ten times the speed of sound (" << speedLimit << " m/s)";
+    throw SimulationFailure(message.str(), steps, fluid.id[fastest], "speed");
+  }
   [[noreturn]] void fail(float bound) {
     const fluid::BadParticle bad = engine->findBadParticle(bound);
     std::ostringstream message;

@@ -38,7 +38,7 @@ void expectContains(const std::string& message, const std::vector<std::string>& 
 
 TEST(SceneErrors, NegativeSpacing) {
   EXPECT_EQ(parseError(with(minimalSceneJson(), "/fluid/spacing", -0.01)),
-            "scenes/x.json: fluid.spacing: expected a positive number, got -0.01");
+            "scenes/x.json: fluid.spacing: expected a number in [1e-06, 100], got -0.01");
 }
 
 TEST(SceneErrors, UnknownKernelListsTheChoices) {
@@ -115,7 +115,7 @@ TEST(SceneErrors, ValuesOutOfRange) {
       {"/fluid/viscosity/wall_friction", "a lot", "fluid.viscosity.wall_friction: expected a"},
       {"/fluid/surface_tension/coefficient", -0.07, "fluid.surface_tension.coefficient: exp"},
       {"/fluid/surface_tension/threshold", 0, "fluid.surface_tension.threshold: expected a pos"},
-      {"/fluid/spacing", nullptr, "fluid.spacing: expected a positive number, got null"},
+      {"/fluid/spacing", nullptr, "fluid.spacing: expected a number in [1e-06, 100], got null"},
       {"/walls/0/type", "bowl",
        "walls[0].type: expected one of \"tank\", \"box\", \"sphere\", \"cylinder\", \"plane\", "
        "\"mesh\", got \"bowl\""},
@@ -137,13 +137,20 @@ TEST(SceneErrors, ValuesOutOfRange) {
       {"/calibration/max_expected_speed", 0, "calibration.max_expected_speed: expected a pos"},
       {"/calibration/speed_of_sound", "fast", "calibration.speed_of_sound: expected a positive"},
       {"/calibration/stiffness", false, "calibration.stiffness: expected a positive number or"},
-      {"/time/duration", -2, "time.duration: expected a positive number, got -2"},
+      {"/time/duration", -2, "time.duration: expected a number in (0, 1000000], got -2"},
       {"/time/cfl", 0, "time.cfl: expected a number in (0, 1], got 0"},
       {"/time/force_factor", 1.01, "time.force_factor: expected a number in (0, 1], got 1.01"},
       {"/time/viscous_factor", 2, "time.viscous_factor: expected a number in (0, 1]"},
-      {"/time/max_dt", 0, "time.max_dt: expected a positive number, got 0"},
-      {"/time/fixed_dt", -1e-4, "time.fixed_dt: expected a positive number or null"},
-      {"/output/fps", 0, "output.fps: expected a positive number, got 0"},
+      {"/time/max_dt", 0, "time.max_dt: expected a number in [1e-09, 10], got 0"},
+      {"/time/fixed_dt", -1e-4, "time.fixed_dt: expected a number in [1e-09, 10] or null"},
+      {"/output/fps", 0, "output.fps: expected a number in (0, 100000], got 0"},
+      // Values that validate once accepted and run then hung on or crashed with.
+      {"/fluid/spacing", 1e-300, "fluid.spacing: expected a number in [1e-06, 100], got 1e-300"},
+      {"/fluid/spacing", 1e-21, "fluid.spacing: expected a number in [1e-06, 100], got 1e-21"},
+      {"/time/fixed_dt", 1e-300, "time.fixed_dt: expected a number in [1e-09, 10] or null"},
+      {"/output/fps", 1e9, "output.fps: expected a number in (0, 100000], got 1000000000"},
+      {"/objects/0/spacing", 1e-300,
+       "objects[0].spacing: expected 0 (the fluid's) or a number in [1e-06, 100], got 1e-300"},
       {"/output/format", "vtk",
        "output.format: expected one of \"vtp\", \"ply\", \"csv\", "
        "\"none\", got \"vtk\""},
@@ -162,7 +169,7 @@ TEST(SceneErrors, NumbersMustBeFinite) {
   expectContains(parseError(with(minimalSceneJson(), "/domain/max", {1, 1, inf})),
                  {"scenes/x.json: domain.max: expected an array of 3 numbers"});
   EXPECT_EQ(parseError(with(minimalSceneJson(), "/time/duration", inf)),
-            "scenes/x.json: time.duration: expected a positive number, got inf");
+            "scenes/x.json: time.duration: expected a number in (0, 1000000], got inf");
 }
 
 TEST(SceneErrors, UnknownKeySuggestsTheNearestKey) {
@@ -270,7 +277,7 @@ TEST(SceneErrors, BadProbesNameTheKey) {
             "scenes/x.json: probes[0].name: expected a name without commas or quotes, got "
             "\"a,b\"");
   EXPECT_EQ(parseError(with(completeSceneJson(), "/output/probe_rate", 0)),
-            "scenes/x.json: output.probe_rate: expected a positive number, got 0");
+            "scenes/x.json: output.probe_rate: expected a number in (0, 10000000], got 0");
 }
 
 }  // namespace

@@ -368,7 +368,7 @@ TEST_F(SceneFile, ValidationErrorsNameTheFile) {
   document["fluid"]["spacing"] = -0.01;
   const auto file = write("bad.json", document.dump());
   EXPECT_EQ(loadError(file),
-            file.string() + ": fluid.spacing: expected a positive number, got -0.01");
+            file.string() + ": fluid.spacing: expected a number in [1e-06, 100], got -0.01");
 }
 
 }  // namespace

@@ -137,7 +137,7 @@ TEST(SceneOverrides, PathThroughAValueOfTheWrongTypeInTheFile) {
 // A bad value from --set gets the message a bad file value gets, plus where it came from.
 TEST(SceneOverrides, BadValuesSayWhichOverrideSetThem) {
   EXPECT_EQ(parseError(minimalSceneJson(), {"fluid.spacing=-0.01"}),
-            "scenes/x.json: fluid.spacing: expected a positive number, got -0.01 (from --set "
+            "scenes/x.json: fluid.spacing: expected a number in [1e-06, 100], got -0.01 (from --set "
             "fluid.spacing=-0.01)");
   EXPECT_EQ(parseError(minimalSceneJson(), {"output.format=vtk"}),
             "scenes/x.json: output.format: expected one of \"vtp\", \"ply\", \"csv\", \"none\", "

@@ -35,6 +35,27 @@ TEST(Failure, BlowUpNamesStepParticleAndQuantity) {
   for (float v : f.velocity) ASSERT_TRUE(std::isfinite(v));
 }
 
+// A stiffness far beyond the calibration's with a fixed step once threw every particle out of
+// the domain at 7e8 m/s, and the run reported itself completed.
+TEST(Failure, RunawaySpeedStopsTheRunNamingTheFastestParticle) {
+  Scene scene = testing::restingTank(0.01, 0.1, 0.1);
+  scene.calibration.stiffness = 1e12;
+  scene.time.fixedDt = 0.001;
+  Simulation sim(scene);
+  try {
+    for (int i = 0; i < 100; ++i) sim.step();
+    FAIL() << "a run at thousands of m/s must fail";
+  } catch (const SimulationFailure& failure) {
+    EXPECT_EQ(failure.quantity(), "speed");
+    const std::string message = failure.what();
+    EXPECT_NE(message.find("particle " + std::to_string(failure.particleId())), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("past ten times the speed of sound"), std::string::npos) << message;
+    EXPECT_LT(failure.particleId(), sim.calibration().fluidParticles);
+  }
+  EXPECT_LE(sim.stepCount(), 5u);
+}
+
 TEST(Failure, UnderivableSoundSpeedIsAnInputError) {
   Scene scene = testing::collidingBlocks(PressureForm::Symmetric);
   for (auto& block : scene.fluid.blocks) block.velocity = {0, 0, 0};
