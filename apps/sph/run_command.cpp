@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "backend/cpu_parallel.hpp"
@@ -61,7 +62,11 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
 int runCommand(const RunOptions& options) {
   backend::setThreadCount(options.threads);
   const Scene scene = io::loadScene(options.scene, options.overrides);
-  const std::string dir = options.out.empty() ? "out/" + scene.name : options.out;
+  // A scene without a name writes under its file's name; the loader keeps names to one path
+  // component, so the run stays inside out/.
+  const std::string name =
+      scene.name.empty() ? std::filesystem::path(options.scene).stem().string() : scene.name;
+  const std::string dir = options.out.empty() ? "out/" + name : options.out;
   Simulation sim(scene, simulationOptions(options.backend, options.device));
   std::vector<std::string> objectNames;
   for (const ObjectDesc& object : scene.objects) objectNames.push_back(object.name);

@@ -142,7 +142,7 @@ WallDesc readWall(const ObjectReader& in, std::size_t index) {
       if (w.meshFile.empty())
         in.context().fail(in.keyPath("file"), "expected the path of an OBJ or STL file");
       w.center = in.vec3("center", w.center);
-      w.scale = in.number("scale", w.scale, kPositive);
+      w.scale = in.number("scale", w.scale, kScale);
       w.open = in.boolean("open", w.open);
       break;
   }
@@ -174,7 +174,7 @@ ShapeDesc readShape(const ObjectReader& in) {
   shape.axis = in.vec3("axis", shape.axis);
   shape.capped = in.boolean("capped", shape.capped);
   shape.meshFile = in.string("file", shape.meshFile);
-  shape.scale = in.number("scale", shape.scale, kPositive);
+  shape.scale = in.number("scale", shape.scale, kScale);
   shape.solid = in.boolean("solid", shape.solid);
   shape.layers = in.integer("layers", shape.layers, 1, 8);
   return shape;
@@ -524,6 +524,11 @@ Scene parseScene(const json& document, const std::string& sourceName,
   Scene scene;
   scene.sourcePath = sourceName;
   scene.name = root.string("name", scene.name);
+  // The name is the default output folder under out/: one plain path component.
+  if (scene.name == "." || scene.name == ".." ||
+      scene.name.find_first_of("/\\") != std::string::npos)
+    context.fail("name", "expected a name without '/' or '\\' that is not '.' or '..', got \"" +
+                             scene.name + "\"");
   scene.description = root.string("description", scene.description);
   scene.domain = readDomain(root.requiredObject("domain"));
   scene.gravity = root.vec3("gravity", scene.gravity);

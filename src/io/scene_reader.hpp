@@ -67,6 +67,7 @@ inline constexpr NumberRule kTimeStep{1e-9, 10, false, false};
 inline constexpr NumberRule kDuration{0, 1e6, true, false};
 inline constexpr NumberRule kFrameRate{0, 1e5, true, false};
 inline constexpr NumberRule kSampleRate{0, 1e7, true, false};
+inline constexpr NumberRule kScale{0, 1e3, true, false};  // a mesh's, on coordinates ≤ 1e6
 
 // Reads the keys of one JSON object. Constructing it checks that the value is an object and
 // that every key in it is in the schema. A reader of an absent object gives every default.

@@ -367,6 +367,15 @@ TriangleMesh loadMesh(const fs::path& file) {
   const std::string bytes = readWholeFile(file);
   TriangleMesh mesh = extension == ".obj" ? readObj(file, bytes) : readStl(file, bytes);
   if (mesh.triangles.empty()) fail(file, "the mesh has no triangles");
+  // A million metres is no scene's geometry; past it the samplers' lattice indices overflow.
+  constexpr float kFarthest = 1e6f;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const Vec3 p = mesh.vertices[v];
+    if (std::abs(p.x) > kFarthest || std::abs(p.y) > kFarthest || std::abs(p.z) > kFarthest)
+      fail(file, "vertex " + std::to_string(v + 1) + " lies at (" + std::to_string(p.x) + ", " +
+                     std::to_string(p.y) + ", " + std::to_string(p.z) +
+                     "), farther than 1e6 from the origin on an axis");
+  }
   return mesh;
 }
 

@@ -144,6 +144,11 @@ TEST(SceneErrors, ValuesOutOfRange) {
       {"/time/max_dt", 0, "time.max_dt: expected a number in [1e-09, 10], got 0"},
       {"/time/fixed_dt", -1e-4, "time.fixed_dt: expected a number in [1e-09, 10] or null"},
       {"/output/fps", 0, "output.fps: expected a number in (0, 100000], got 0"},
+      // A name is the output folder under out/; this one once wrote outside it.
+      {"/name", "../../escaped_run",
+       "name: expected a name without '/' or '\\' that is not '.' or '..', got "
+       "\"../../escaped_run\""},
+      {"/name", "..", "name: expected a name without '/'"},
       // Values that validate once accepted and run then hung on or crashed with.
       {"/fluid/spacing", 1e-300, "fluid.spacing: expected a number in [1e-06, 100], got 1e-300"},
       {"/fluid/spacing", 1e-21, "fluid.spacing: expected a number in [1e-06, 100], got 1e-21"},

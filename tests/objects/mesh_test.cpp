@@ -260,6 +260,9 @@ TEST(MeshLoad, ObjErrorsNameFileAndLine) {
   expectLoadError(dir.write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"), {"zero.obj:4:"});
   expectLoadError(dir.write("points.obj", "v 0 0 0\nv 1 0 0\n"),
                   {"points.obj: the mesh has no triangles"});
+  // A vertex at 3e38 once overflowed the sampler's lattice index.
+  expectLoadError(dir.write("far.obj", "v 0 0 0\nv 3e38 0 0\nv 0 1 0\nf 1 2 3\n"),
+                  {"far.obj: vertex 2 lies at", "farther than 1e6 from the origin"});
 }
 
 TEST(MeshLoad, StlErrorsNameFileAndLine) {
