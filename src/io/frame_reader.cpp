@@ -32,13 +32,15 @@ bool isFrameExtension(const std::string& ext) {
   return ext == ".vtp" || ext == ".ply" || ext == ".csv";
 }
 
-// "frame_00012.vtp" → 12; -1 for any other name (temporaries, stray files).
+// "frame_00012.vtp" → 12; -1 for any other name (temporaries, stray files, and numbers of more
+// than 9 digits, which no run writes and which would not fit).
 long frameNumber(const fs::path& file) {
   const std::string stem = file.stem().string();
   const std::string prefix = "frame_";
   if (stem.size() <= prefix.size() || stem.compare(0, prefix.size(), prefix) != 0) return -1;
   const std::string digits = stem.substr(prefix.size());
-  if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+  if (digits.size() > 9 ||
+      !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
     return -1;
   return std::stol(digits);
 }

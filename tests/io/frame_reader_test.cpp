@@ -135,6 +135,8 @@ TEST_F(RunFramesTest, ListsFramesInNumberOrderWithTheBoundary) {
   for (const char* name : {"frame_00010.ply", "frame_00002.ply", "frame_00000.ply"})
     writeFrame(makeFrame(), FrameFormat::Ply, dir_ / "frames" / name);
   writeAll(dir_ / "frames" / "frame_00011.ply.tmp", "a frame being written");
+  // 20 digits once ended the listing with "error: stol".
+  writeAll(dir_ / "frames" / "frame_12345678901234567890.ply", "no run writes this");
   writeFrame(makeFrame(), FrameFormat::Ply, dir_ / "boundary.ply");
   const RunFrameFiles files = listRunFrames(dir_);
   ASSERT_EQ(files.frames.size(), 3u);
