@@ -17,6 +17,7 @@
 #include "sim/object_runner.hpp"
 #include "sim/probes.hpp"
 #include "sim/sampling.hpp"
+#include "sim/scene_size.hpp"
 #include "sim/walls.hpp"
 #include "sph/core/kernels.hpp"
 #include "sph/core/time_step.hpp"
@@ -80,6 +81,7 @@ struct Simulation::Impl {
 
   Impl(const Scene& s, const SimulationOptions& options) : scene(s) {
     backend::requireCompiledInstructionSet();
+    sim::refuseIfTooLarge(scene, sim::availableBytes());  // before anything large is made
     calibration = sim::calibrate(scene);
     const sim::Walls walls(scene);
     sim::EngineSetup setup = sim::engineSetup(scene, calibration, walls);

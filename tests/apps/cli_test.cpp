@@ -140,6 +140,13 @@ TEST_F(Cli, BadInputExitsTwoNamingFileAndKey) {
   EXPECT_EQ(runSph("run " + (dir_ / "missing.json").string()).code, 2);
   EXPECT_EQ(runSph("run " + scene_.string() + " --backend cuda").code, 2);
   EXPECT_EQ(runSph("validate " + scene_.string() + " --set fluid.spacing=-1").code, 2);
+  // Too large for the machine: refused at once with the count, not a bad_alloc minutes later.
+  const Result huge = runSph("run " + scene_.string() + " --out " + (dir_ / "huge").string() +
+                             " --set fluid.spacing=0.000001");
+  EXPECT_EQ(huge.code, 2);
+  EXPECT_NE(huge.output.find("drop.json: fluid.spacing: the scene would make"), std::string::npos)
+      << huge.output;
+  EXPECT_FALSE(fs::exists(dir_ / "huge" / "stats.csv"));
   // 100,000 threads once crashed inside OpenMP.
   const Result threads = runSph("run " + scene_.string() + " --out " + (dir_ / "threads").string() +
                                 " --threads 100000");

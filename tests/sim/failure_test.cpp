@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scene_builders.hpp"
+#include "sim/scene_size.hpp"
 #include "sph/error.hpp"
 #include "sph/simulation.hpp"
 
@@ -54,6 +55,24 @@ TEST(Failure, RunawaySpeedStopsTheRunNamingTheFastestParticle) {
     EXPECT_LT(failure.particleId(), sim.calibration().fluidParticles);
   }
   EXPECT_LE(sim.stepCount(), 5u);
+}
+
+// --set fluid.spacing=0.0001 on the dam break once grew to 4.6 GB and ended in bad_alloc.
+TEST(Failure, ASceneLargerThanTheMachineIsRefusedBeforeAnythingIsMade) {
+  Scene scene = testing::restingTank(1e-5, 0.1, 0.1);  // 1e12 particles
+  try {
+    Simulation sim(scene);
+    FAIL() << "a scene of 1e12 particles was built";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("resting_tank (test): fluid.spacing: the scene would make 1e+12 "
+                           "fluid"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("GB of memory, more than this machine's"), std::string::npos) << message;
+  }
+  EXPECT_NO_THROW(sim::refuseIfTooLarge(testing::restingTank(0.01, 0.1, 0.1), 1e7));
+  EXPECT_THROW(sim::refuseIfTooLarge(testing::restingTank(0.01, 0.1, 0.1), 1e5), InputError);
 }
 
 TEST(Failure, UnderivableSoundSpeedIsAnInputError) {
