@@ -10,7 +10,12 @@
 
 namespace sph::cli {
 
-enum ExitCode { kExitOk = 0, kExitBadInput = 2, kExitSimulationFailed = 3 };
+enum ExitCode {
+  kExitOk = 0,
+  kExitBadInput = 2,
+  kExitSimulationFailed = 3,
+  kExitOutputFailed = 4  // a full disk, a read-only or vanished output directory
+};
 
 struct RunOptions {
   std::string scene;

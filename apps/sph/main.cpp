@@ -156,6 +156,9 @@ int main(int argc, char** argv) {
   } catch (const sph::InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return kExitBadInput;
+  } catch (const sph::OutputError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kExitOutputFailed;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

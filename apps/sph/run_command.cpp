@@ -34,7 +34,9 @@ struct RunRecord {
 void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecord& record) {
   const double steps = double(sim.stepCount());
   nlohmann::json summary = {
-      {"status", record.failure.is_null() ? "completed" : "failed"},
+      {"status", record.failure.is_null()                           ? "completed"
+                 : record.failure.value("quantity", "") == "output" ? "output failed"
+                                                                    : "failed"},
       {"failure", record.failure},
       {"scene_file", sim.scene().sourcePath},
       {"backend", sim.backendName()},
@@ -125,6 +127,21 @@ int runCommand(const RunOptions& options) {
     std::fprintf(stderr, "error: %s\nthe frames and stats up to t = %g s are in %s\n",
                  failure.what(), sim.time(), output.dir().c_str());
     return kExitSimulationFailed;
+  } catch (const OutputError& failure) {
+    // The frames written are whole (each is renamed into place); say what happened in
+    // summary.json if the disk still takes it.
+    progress.finish(sim.time(), sim.stepCount());
+    record.wallSeconds = secondsSince(start);
+    record.failure = {{"message", failure.what()}, {"quantity", "output"}};
+    bool summarised = true;
+    try {
+      writeSummary(output, sim, record);
+    } catch (const std::exception&) {
+      summarised = false;
+    }
+    std::fprintf(stderr, "error: %s\nthe run stopped at t = %g s; %s\n", failure.what(), sim.time(),
+                 summarised ? "summary.json says so" : "summary.json could not be written either");
+    return kExitOutputFailed;
   }
   output.finish();
   progress.finish(sim.time(), sim.stepCount());

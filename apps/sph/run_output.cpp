@@ -32,12 +32,19 @@ RunOutput::RunOutput(fs::path dir, FrameFormat format, bool force,
       throw InputError(dir_.string() +
                        ": holds an earlier run; pass --force to overwrite it or choose another "
                        "--out directory");
-    for (const char* name : kRunFiles) fs::remove_all(dir_ / name);
+    for (const char* name : kRunFiles) {
+      std::error_code error;
+      fs::remove_all(dir_ / name, error);
+      if (error)
+        throw OutputError("cannot remove the earlier run's '" + (dir_ / name).string() +
+                          "': " + error.message());
+    }
   }
   std::error_code error;
   fs::create_directories(dir_ / "frames", error);
   if (error)
-    throw InputError(dir_.string() + ": cannot create the output directory: " + error.message());
+    throw OutputError("cannot create the output directory '" + (dir_ / "frames").string() +
+                      "': " + error.message());
   stats_.emplace(dir_ / "stats.csv", std::move(objectNames));
   if (format_ == FrameFormat::Vtp) series_.emplace(dir_ / "frames.pvd");
 }

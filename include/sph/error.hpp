@@ -1,5 +1,5 @@
 // Errors the library reports to its callers. The command line maps them to exit codes:
-// InputError → 2, SimulationFailure → 3.
+// InputError → 2, SimulationFailure → 3, OutputError → 4.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +10,13 @@ namespace sph {
 
 // Bad input: the message names the file, the key and what was expected.
 class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Writing results failed: a full disk, a read-only or vanished directory. The message names the
+// file and the system's reason; whole files already written stay whole.
+class OutputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

@@ -3,8 +3,9 @@
 
 #include <cstring>
 #include <filesystem>
-#include <stdexcept>
 #include <string>
+
+#include "sph/error.hpp"
 
 namespace sph::io {
 
@@ -13,7 +14,7 @@ namespace sph::io {
 [[noreturn]] inline void throwFileError(const char* action, const std::filesystem::path& path,
                                         int error) {
   const char* reason = error != 0 ? std::strerror(error) : "unknown error";
-  throw std::runtime_error(std::string("cannot ") + action + " '" + path.string() + "': " + reason);
+  throw OutputError(std::string("cannot ") + action + " '" + path.string() + "': " + reason);
 }
 
 }  // namespace sph::io

@@ -13,7 +13,7 @@
 namespace sph::io {
 
 // Writes `frame` to `file` (extension not added). FrameFormat::None writes nothing.
-// Throws std::runtime_error naming the path and the system error when the file cannot be written,
+// Throws OutputError naming the path and the system error when the file cannot be written,
 // std::invalid_argument when the frame's arrays disagree in length.
 void writeFrame(const ParticleFrame& frame, FrameFormat format, const std::filesystem::path& file);
 

@@ -15,7 +15,7 @@ namespace sph::io {
 class ProbesWriter {
  public:
   // Creates (truncates) the file and writes the header "time_s,<columns>". Throws
-  // std::runtime_error naming the path and the system error when it cannot be written.
+  // OutputError naming the path and the system error when it cannot be written.
   ProbesWriter(std::filesystem::path csvFile, const std::vector<std::string>& columns);
 
   // Writes the rows and flushes them. A NaN (a point probe in the air) is written "nan".

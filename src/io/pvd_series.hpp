@@ -15,7 +15,7 @@ class PvdSeries {
 
   // Appends a frame (`relativeFile` relative to the .pvd's folder) and rewrites the whole
   // collection atomically, so the .pvd on disk is valid after every frame even if the run dies.
-  // Throws std::runtime_error naming the path when it cannot be written.
+  // Throws OutputError naming the path when it cannot be written.
   void add(double time, const std::string& relativeFile);
 
  private:

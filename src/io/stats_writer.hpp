@@ -13,7 +13,7 @@ namespace sph::io {
 
 class StatsWriter {
  public:
-  // Creates (truncates) the file and writes the header. Throws std::runtime_error naming the path
+  // Creates (truncates) the file and writes the header. Throws OutputError naming the path
   // and the system error when the file cannot be opened or written.
   // Each object named gets columns of its own: <name>_force_x .. _z (the fluid's contact force
   // on it, N) and <name>_com_x .. _z (its centre of mass, m).

@@ -155,6 +155,15 @@ TEST_F(Cli, BadInputExitsTwoNamingFileAndKey) {
   EXPECT_NE(threads.output.find("1024"), std::string::npos) << threads.output;
 }
 
+// Results that cannot be written are neither bad input nor a failed simulation.
+TEST_F(Cli, AnOutputDirectoryThatCannotBeMadeExitsFour) {
+  const Result r = runSph("run " + scene_.string() + " --out /dev/null/run");
+  EXPECT_EQ(r.code, 4) << r.output;
+  EXPECT_NE(r.output.find("cannot create the output directory '/dev/null/run/frames'"),
+            std::string::npos)
+      << r.output;
+}
+
 TEST_F(Cli, BlowUpExitsThreeKeepingWhatWasComputed) {
   const fs::path out = dir_ / "blowup";
   const Result r = runSph(

@@ -1,4 +1,5 @@
 #include "io/stats_writer.hpp"
+#include "sph/error.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -139,6 +140,20 @@ TEST_F(StatsWriterTest, MissingDirectoryThrowsNamingThePath) {
     FAIL() << "expected std::runtime_error";
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find(file.string()), std::string::npos) << error.what();
+  }
+}
+
+// /dev/full takes the open and refuses every write with ENOSPC: a full disk.
+TEST_F(StatsWriterTest, AFullDiskIsAnOutputErrorNamingTheFileAndTheReason) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  try {
+    StatsWriter writer("/dev/full");
+    writer.append(makeStats(1));
+    FAIL() << "a full disk took the rows";
+  } catch (const OutputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("cannot write '/dev/full'"), std::string::npos) << message;
+    EXPECT_NE(message.find("No space left on device"), std::string::npos) << message;
   }
 }
 
