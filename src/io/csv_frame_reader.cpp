@@ -1,5 +1,7 @@
 // Reads the CSV that csv_frame_writer.cpp writes: a header naming the columns, then one row per
 // particle. Columns are found by name, so a spreadsheet that reorders them still reads.
+#include <cfloat>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <map>
@@ -39,6 +41,18 @@ double parseNumber(const std::string& field, const std::string& column, std::siz
   return value;
 }
 
+// A value a frame's integer or float column can hold: a cast of anything else is undefined.
+double requireWithin(double value, double lo, double hi, bool integer, const char* column,
+                     std::size_t line, const std::filesystem::path& file) {
+  if (!(value >= lo && value <= hi) || (integer && value != std::floor(value))) {
+    std::ostringstream text;
+    text << "line " << line << ", column '" << column << "': " << value << " is not "
+         << (integer ? "an integer" : "a number") << " in [" << lo << ", " << hi << "]";
+    throwBadFrame(file, text.str());
+  }
+  return value;
+}
+
 }  // namespace
 
 ParticleFrame readCsvFrame(const std::string& text, const std::filesystem::path& file) {
@@ -72,8 +86,13 @@ ParticleFrame readCsvFrame(const std::string& text, const std::filesystem::path&
       v[k] = index[k] < fields.size() ? parseNumber(fields[index[k]], names[k], lineNumber, file)
                                       : 0.0;
     const std::size_t i = frame.size();
-    // Out-of-range doubles must not reach the integer casts below (undefined behaviour).
+    // Out-of-range doubles must not reach the casts below (undefined behaviour).
     requireValidKind(v[1] >= 0 && v[1] <= 2 ? static_cast<unsigned>(v[1]) : 255u, i, file);
+    requireWithin(v[0], 0, 4294967295.0, true, names[0], lineNumber, file);
+    requireWithin(v[2], -1, 2147483647.0, true, names[2], lineNumber, file);
+    requireWithin(v[11], 0, 1, true, names[11], lineNumber, file);
+    for (int k = 3; k <= 10; ++k)
+      requireWithin(v[k], -FLT_MAX, FLT_MAX, false, names[k], lineNumber, file);
     frame.id.push_back(static_cast<std::uint32_t>(v[0]));
     frame.kind.push_back(static_cast<std::uint8_t>(v[1]));
     frame.object.push_back(static_cast<std::int32_t>(v[2]));

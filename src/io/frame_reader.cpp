@@ -17,6 +17,15 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string readBytes(const fs::path& file) {
+  // A pipe would block the read forever, and a device (/dev/zero) never ends.
+  std::error_code error;
+  if (fs::exists(file, error) && !fs::is_regular_file(file, error))
+    throw InputError(file.string() + ": is not a regular file (a directory, a device or a pipe)");
+  constexpr std::uintmax_t kLargest = std::uintmax_t(4) << 30;  // 100 million particles
+  const std::uintmax_t size = fs::file_size(file, error);
+  if (!error && size > kLargest)
+    throw InputError(file.string() + ": is " + std::to_string(size) +
+                     " bytes; frames over 4 GiB are refused");
   errno = 0;
   std::ifstream in(file, std::ios::binary);
   if (!in)

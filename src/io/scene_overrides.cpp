@@ -43,6 +43,15 @@ class OverrideError {
   std::string where_;
 };
 
+bool isUtf8(const std::string& text) {
+  try {
+    json(text).dump();
+    return true;
+  } catch (const json::type_error&) {
+    return false;
+  }
+}
+
 std::string trim(const std::string& s) {
   const auto notSpace = [](unsigned char c) { return !std::isspace(c); };
   const auto begin = std::find_if(s.begin(), s.end(), notSpace);
@@ -153,6 +162,9 @@ std::vector<AppliedOverride> applyOverrides(json& document,
     const std::vector<KeyStep> steps = resolveKey(key, error, keyPath);
     std::optional<json> parsed = parseJsonIfValid(valueText, error.where());
     json value = parsed ? std::move(*parsed) : json(valueText);  // `format=ply` needs no quotes
+    // A scene's text is UTF-8 (the JSON parser checks a file's); bytes that are not would fail
+    // later, wherever the value is printed.
+    if (!parsed && !isUtf8(valueText)) error.fail("expected UTF-8 text");
     store(document, steps, std::move(value), error);
 
     // This value replaces whatever earlier overrides put at or below the same key.

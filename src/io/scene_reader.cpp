@@ -15,7 +15,8 @@ std::string describeValue(const json& value) {
     return formatNumber(value.get<double>());
   }
   constexpr std::size_t kMaxLength = 60;
-  std::string text = value.dump();
+  // Replacement characters for bytes that are not UTF-8: a message must never fail to print.
+  std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
   if (text.size() > kMaxLength) text = text.substr(0, kMaxLength - 3) + "...";
   return text;
 }

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "sph/core/vec.hpp"
@@ -19,6 +20,9 @@ struct TriangleMesh {
 // count from the end) or STL (ASCII or binary, told apart by content, not by extension).
 // Throws InputError naming the file, and the line for text formats, on anything it cannot use.
 TriangleMesh loadMesh(const std::filesystem::path& file);
+// What loadMesh does with the file's bytes; `file` names the format (by its extension) and the
+// mesh in messages.
+TriangleMesh parseMesh(const std::string& bytes, const std::filesystem::path& file);
 
 // The volume a closed mesh encloses by the divergence theorem, positive when its triangles
 // wind outward (right hand).

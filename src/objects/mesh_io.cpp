@@ -31,6 +31,13 @@ std::string readWholeFile(const fs::path& file) {
   std::error_code error;
   if (!fs::exists(file, error)) fail(file, "file does not exist");
   if (fs::is_directory(file, error)) fail(file, "is a directory, not a mesh file");
+  // A pipe would block the read forever, and a device or a sparse file never end.
+  if (!fs::is_regular_file(file, error))
+    fail(file, "is not a regular file (a device, a pipe or a socket), not a mesh file");
+  constexpr std::uintmax_t kLargest = std::uintmax_t(1) << 30;
+  const std::uintmax_t size = fs::file_size(file, error);
+  if (!error && size > kLargest)
+    fail(file, "is " + std::to_string(size) + " bytes; meshes over 1 GiB are refused");
   std::ifstream in(file, std::ios::binary);
   if (!in) fail(file, "cannot be opened for reading");
   std::ostringstream content;
@@ -354,9 +361,8 @@ std::string lowerCaseExtension(const fs::path& file) {
   return extension;
 }
 
-}  // namespace
-
-TriangleMesh loadMesh(const fs::path& file) {
+// ".obj" or ".stl", lower case; anything else fails naming the file.
+std::string requireMeshExtension(const fs::path& file) {
   const std::string extension = lowerCaseExtension(file);
   if (extension != ".obj" && extension != ".stl") {
     fail(file, "not an OBJ or STL file (" +
@@ -364,7 +370,18 @@ TriangleMesh loadMesh(const fs::path& file) {
                                       : "extension " + file.extension().string()) +
                    ")");
   }
-  const std::string bytes = readWholeFile(file);
+  return extension;
+}
+
+}  // namespace
+
+TriangleMesh loadMesh(const fs::path& file) {
+  requireMeshExtension(file);
+  return parseMesh(readWholeFile(file), file);
+}
+
+TriangleMesh parseMesh(const std::string& bytes, const fs::path& file) {
+  const std::string extension = requireMeshExtension(file);
   TriangleMesh mesh = extension == ".obj" ? readObj(file, bytes) : readStl(file, bytes);
   if (mesh.triangles.empty()) fail(file, "the mesh has no triangles");
   // A million metres is no scene's geometry; past it the samplers' lattice indices overflow.

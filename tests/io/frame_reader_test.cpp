@@ -152,6 +152,42 @@ TEST_F(RunFramesTest, NoBoundaryWhenTheRunHasNoWalls) {
   EXPECT_TRUE(listRunFrames(dir_).boundary.empty());
 }
 
+// /dev/zero once grew the reader's buffer until memory ran out.
+TEST_F(RunFramesTest, ADeviceOrADirectoryIsNotAFrame) {
+  if (fs::exists("/dev/zero")) {
+    fs::create_directories(dir_ / "frames");
+    fs::create_symlink("/dev/zero", dir_ / "frames" / "frame_00000.csv");
+    try {
+      readFrame(dir_ / "frames" / "frame_00000.csv");
+      FAIL() << "read /dev/zero as a frame";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("is not a regular file"), std::string::npos) << e.what();
+    }
+  }
+  fs::create_directories(dir_ / "a.vtp");
+  EXPECT_THROW(readFrame(dir_ / "a.vtp"), InputError);
+}
+
+// Found by fuzz_csv: a surface flag of 5.6e87 reached an integer cast (undefined behaviour).
+TEST(CsvFrameReader, ValuesTheirColumnCannotHoldAreRefused) {
+  const std::string header = "id,kind,object,x,y,z,vx,vy,vz,density,pressure,surface\n";
+  const auto error = [&](const std::string& row) {
+    try {
+      readCsvFrame(header + row + "\n", "f.csv");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(error("0,0,-1,0,0,0,0,0,0,1000,0,1"), "accepted");
+  EXPECT_NE(error("0,0,-1,0,0,0,0,0,0,1000,0,5.6e87").find("line 2, column 'surface'"),
+            std::string::npos);
+  EXPECT_NE(error("1e20,0,-1,0,0,0,0,0,0,1000,0,0").find("column 'id'"), std::string::npos);
+  EXPECT_NE(error("0,0,-5e9,0,0,0,0,0,0,1000,0,0").find("column 'object'"), std::string::npos);
+  EXPECT_NE(error("0,0,-1,1e300,0,0,0,0,0,1000,0,0").find("column 'x'"), std::string::npos);
+  EXPECT_NE(error("0.5,0,-1,0,0,0,0,0,0,1000,0,0").find("is not an integer"), std::string::npos);
+}
+
 TEST_F(RunFramesTest, DirectoryWithoutFramesIsAnInputError) {
   EXPECT_THROW(listRunFrames(dir_ / "missing"), InputError);
   EXPECT_THROW(listRunFrames(dir_), InputError);  // no frames/ folder

@@ -122,6 +122,15 @@ TEST(SceneOverrides, MalformedOverride) {
   expectContains(parseError(completeSceneJson(), {"=1"}), {"--set =1: expected dotted.key"});
 }
 
+// Found by fuzz_overrides: bytes that are not UTF-8 became a string that no message could print
+// (nlohmann's type_error 316 ended the process).
+TEST(SceneOverrides, TextThatIsNotUtf8IsRefused) {
+  EXPECT_EQ(parseError(completeSceneJson(), {"name=\xf5\x8f"}),
+            "scenes/x.json: --set name=\xf5\x8f: expected UTF-8 text");
+  EXPECT_EQ(parseError(completeSceneJson(), {"walls.2.radius=0.\xce\xf5"}),
+            "scenes/x.json: --set walls.2.radius=0.\xce\xf5: expected UTF-8 text");
+}
+
 TEST(SceneOverrides, PathThroughAValueOfTheWrongTypeInTheFile) {
   json document = completeSceneJson();
   document["calibration"] = 5;
@@ -136,9 +145,10 @@ TEST(SceneOverrides, PathThroughAValueOfTheWrongTypeInTheFile) {
 
 // A bad value from --set gets the message a bad file value gets, plus where it came from.
 TEST(SceneOverrides, BadValuesSayWhichOverrideSetThem) {
-  EXPECT_EQ(parseError(minimalSceneJson(), {"fluid.spacing=-0.01"}),
-            "scenes/x.json: fluid.spacing: expected a number in [1e-06, 100], got -0.01 (from --set "
-            "fluid.spacing=-0.01)");
+  EXPECT_EQ(
+      parseError(minimalSceneJson(), {"fluid.spacing=-0.01"}),
+      "scenes/x.json: fluid.spacing: expected a number in [1e-06, 100], got -0.01 (from --set "
+      "fluid.spacing=-0.01)");
   EXPECT_EQ(parseError(minimalSceneJson(), {"output.format=vtk"}),
             "scenes/x.json: output.format: expected one of \"vtp\", \"ply\", \"csv\", \"none\", "
             "got \"vtk\" (from --set output.format=vtk)");

@@ -1,6 +1,7 @@
 #include "objects/mesh.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cmath>
@@ -293,6 +294,10 @@ TEST(MeshLoad, RefusesOtherExtensionsAndMissingFiles) {
   expectLoadError(dir.write("mesh", cubeObjWithQuads()), {"(no extension)"});
   const fs::path absent = dir.path() / "absent.obj";
   expectLoadError(absent, {absent.string(), "does not exist"});
+  // A pipe once blocked the read forever: refused without opening it.
+  const fs::path pipe = dir.path() / "pipe.obj";
+  ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
+  expectLoadError(pipe, {pipe.string(), "is not a regular file"});
 }
 
 // Distance from p to the nearest sample, by brute force.
