@@ -11,6 +11,14 @@
 
 namespace sph::testing {
 
+// Built with the sanitizers (tests/CMakeLists.txt): long runs check that they run clean and
+// leave their physics figures to the Release build.
+#ifdef SPH_TESTS_SANITIZED
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+
 inline std::string backendTestName(const ::testing::TestParamInfo<Backend>& info) {
   return info.param == Backend::Cuda ? "cuda" : "cpu";
 }

@@ -431,7 +431,8 @@ TEST_P(WallsHoldWater, AtRestAtRhoGHForTwoSecondsLosingNothing) {
     ASSERT_LT(std::max(pressureColumn, levelColumn), columns.size());
     const std::uint64_t fluid = sim.fluidCount();
     ASSERT_GT(fluid, 1000u);
-    for (int k = 1; k <= 40; ++k) {
+    const int checks = testing::kSanitized ? 4 : 40;  // 2 s, or 0.2 s under the sanitizers
+    for (int k = 1; k <= checks; ++k) {
       sim.advanceTo(0.05 * k);
       const ParticleFrame frame = sim.frame(/*includeBoundary=*/false);
       ASSERT_EQ(frame.size(), fluid) << "at t = " << sim.time();
@@ -443,6 +444,7 @@ TEST_P(WallsHoldWater, AtRestAtRhoGHForTwoSecondsLosingNothing) {
       }
       if (k == 30) sim.takeProbeRows();  // keep the last half second
     }
+    if (testing::kSanitized) continue;
     double pressure = 0.0, level = 0.0;
     const std::vector<ProbeRow> rows = sim.takeProbeRows();
     ASSERT_EQ(rows.size(), 50u);
@@ -496,6 +498,11 @@ TEST_P(WallForceProbes, WeighTheWaterAtRest) {
     gauge.to = {0.1, 0.2, 0.05};
     s.probes.push_back(gauge);
     Simulation sim(s, testing::on(GetParam()));
+    if (testing::kSanitized) {  // the probes' pass runs clean; the figures are Release's
+      sim.advanceTo(0.05);
+      ASSERT_EQ(sim.takeProbeRows().size(), 6u);
+      continue;
+    }
     sim.advanceTo(1.5);
     sim.takeProbeRows();
     sim.advanceTo(2.0);
