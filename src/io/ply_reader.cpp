@@ -1,11 +1,14 @@
 // Reads binary little-endian PLY 1.0 as ply_writer.cpp writes it: a vertex element whose
 // properties are found by name (so their order may differ), `comment time` and `comment step`.
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "io/frame_reader.hpp"
@@ -32,13 +35,28 @@ std::size_t typeBytes(const std::string& type) {
   return 0;
 }
 
+// `value` as T where T can hold it; a value out of T's range (a corrupted file) becomes T's
+// largest, or ±infinity for a float, rather than an undefined conversion.
+template <typename T, typename V>
+T converted(V value) {
+  const double v = double(value);
+  if constexpr (std::is_integral_v<T>) {
+    if (!(v >= double(std::numeric_limits<T>::lowest()) &&
+          v < double(std::numeric_limits<T>::max()) + 1.0))
+      return std::numeric_limits<T>::max();
+  } else if (std::abs(v) > double(std::numeric_limits<T>::max())) {
+    return v > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
+  }
+  return static_cast<T>(value);
+}
+
 // The property's value at `record` as T, converting from the file's type.
 template <typename T>
 T valueAt(const char* record, const Property& p) {
   const char* at = record + p.offset;
   auto load = [at](auto value) {
     std::memcpy(&value, at, sizeof value);
-    return static_cast<T>(value);
+    return converted<T>(value);
   };
   if (p.type == "float" || p.type == "float32") return load(float());
   if (p.type == "double" || p.type == "float64") return load(double());

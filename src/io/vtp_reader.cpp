@@ -105,7 +105,9 @@ class VtpParser {
   double readTime(const std::string& header) const {
     const std::size_t tag = header.find("Name=\"TIME\"");
     if (tag == std::string::npos) return 0.0;
-    return std::strtod(header.c_str() + header.find('>', tag) + 1, nullptr);
+    const std::size_t close = header.find('>', tag);
+    if (close == std::string::npos) return 0.0;
+    return std::strtod(header.c_str() + close + 1, nullptr);
   }
 
   template <typename T>
