@@ -71,6 +71,19 @@ void printCalibration(std::FILE* out, const Simulation& sim) {
     std::fprintf(out, "  probes               %zu at %g per second: %s\n", s.probes.size(),
                  s.output.probeRate, names.c_str());
   }
+  const std::vector<FlowStats> emitters = sim.emitterStats();
+  for (std::size_t k = 0; k < emitters.size(); ++k) {
+    const EmitterDesc& e = s.emitters[k];
+    std::fprintf(out,
+                 "  emitter %-12s %.0f particles a layer at %.6g m/s: %.6g particles/s, %.6g kg/s, "
+                 "from %g s to %g s\n",
+                 e.name.c_str(), emitters[k].rate * c.spacing / e.speed, e.speed, emitters[k].rate,
+                 emitters[k].rate * c.mass, e.start, e.end);
+  }
+  for (const OutletDesc& o : s.outlets)
+    std::fprintf(out, "  outlet %-13s removes what enters [%g, %g, %g] to [%g, %g, %g]\n",
+                 o.name.c_str(), o.box.min[0], o.box.min[1], o.box.min[2], o.box.max[0],
+                 o.box.max[1], o.box.max[2]);
   if (s.objects.empty()) return;
   std::fprintf(out, "  objects              %zu, %llu particles\n", s.objects.size(),
                static_cast<unsigned long long>(c.objectParticles));
@@ -127,6 +140,7 @@ nlohmann::json statsJson(const FrameStats& s) {
           {"surface_count", s.surfaceCount},
           {"leaked_count", s.leakedCount},
           {"removed_count", s.removedCount},
+          {"emitted_count", s.emittedCount},
           {"contact_pairs", s.contactPairs},
           {"density_iterations_per_step",
            s.steps ? double(s.densityIterations) / double(s.steps) : 0.0},
@@ -135,6 +149,13 @@ nlohmann::json statsJson(const FrameStats& s) {
           {"unconverged_solves", s.unconvergedSolves},
           {"objects", objectsJson(s.objects)},
           {"wall_ms_per_step", s.wallMsPerStep}};
+}
+
+nlohmann::json flowJson(const std::vector<FlowStats>& flows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const FlowStats& f : flows)
+    out.push_back({{"name", f.name}, {"particles", f.particles}, {"mass_kg", f.mass}});
+  return out;
 }
 
 nlohmann::json objectsJson(const std::vector<ObjectStats>& objects) {

@@ -17,6 +17,8 @@ void printCalibration(std::FILE* out, const Simulation& sim);
 nlohmann::json calibrationJson(const Calibration& c);
 nlohmann::json statsJson(const FrameStats& s);
 nlohmann::json objectsJson(const std::vector<ObjectStats>& objects);
+// Emitters' or outlets' fluid since the start: name, particles, mass_kg.
+nlohmann::json flowJson(const std::vector<FlowStats>& flows);
 
 const char* backendName();
 const char* formatName(FrameFormat format);

@@ -52,6 +52,9 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
       {"removed_count", sim.removedCount()},
       {"clamped_count", sim.clampedCount()},
       {"leaked_count", sim.leakedCount()},
+      {"emitted_count", sim.emittedCount()},
+      {"emitters", flowJson(sim.emitterStats())},
+      {"outlets", flowJson(sim.outletStats())},
       {"objects", objectsJson(sim.objectStats())},
       {"final", statsJson(sim.stats())},
       {"scene", io::sceneToJson(sim.scene())}};
@@ -157,6 +160,13 @@ int runCommand(const RunOptions& options) {
         output.framesWritten(), static_cast<unsigned long long>(last.fluidCount),
         static_cast<unsigned long long>(last.removedCount),
         static_cast<unsigned long long>(last.leakedCount));
+    if (last.emittedCount > 0 || !sim.scene().outlets.empty()) {
+      std::uint64_t drained = 0;
+      for (const FlowStats& f : sim.outletStats()) drained += f.particles;
+      std::printf("flow: %llu particles emitted, %llu drained by the outlets\n",
+                  static_cast<unsigned long long>(last.emittedCount),
+                  static_cast<unsigned long long>(drained));
+    }
     if (last.boundaryCount > 0) {
       std::printf(
           "open %s/frames.pvd (and the walls, %s/boundary.vtp) in ParaView; statistics "

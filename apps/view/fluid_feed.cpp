@@ -16,7 +16,8 @@ constexpr std::chrono::seconds kRangeRefresh{1};
 FluidFeed::FluidFeed(render::ParticleRenderer& renderer, const Simulation& sim)
     : renderer_(renderer), path_("fluid through host copies") {
   const Calibration& c = sim.calibration();
-  renderer_.reserve(c.fluidParticles + c.boundaryParticles + c.objectParticles);
+  reserved_ = c.fluidParticles + c.boundaryParticles + c.objectParticles;
+  renderer_.reserve(reserved_);
   if (std::strcmp(sim.backendName(), "cuda") != 0) return;
   try {
     interop_ = std::make_unique<CudaGlFluid>(renderer_);
@@ -39,6 +40,13 @@ render::ValueRange FluidFeed::fluidRange(const Simulation& sim, const render::Dr
 }
 
 void FluidFeed::feed(const Simulation& sim, const render::DrawSettings& draw) {
+  const Calibration& c = sim.calibration();
+  if (interop_ && sim.fluidCount() + c.boundaryParticles + c.objectParticles > reserved_) {
+    // Emitters have put in more than the buffers interop registered hold: growing them
+    // would leave the registration behind.
+    interop_.reset();
+    path_ = "fluid through host copies: the emitters outgrew the buffers drawn from the GPU";
+  }
   if (!interop_) {
     renderer_.setParticles(sim.frame(draw.show.boundary));
     return;

@@ -32,6 +32,7 @@ class FluidFeed {
 
   render::ParticleRenderer& renderer_;
   std::unique_ptr<CudaGlFluid> interop_;
+  std::size_t reserved_ = 0;  // the particles interop's buffers hold
   std::string path_;
   // The colour range of a fluid drawn from the GPU, when the settings give none: taken from a
   // host copy once a second, which is all that crosses the host for the fluid.

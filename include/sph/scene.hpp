@@ -164,6 +164,40 @@ struct ProbeDesc {
   std::string wall;         // Force: a wall's name
 };
 
+// Flow in (scene "emitters"): fluid enters through a disc or a rectangle on the fluid's
+// lattice, a layer each time the last has moved one spacing on, at `speed` along the shape's
+// normal, from `start` to `end`. The fluid within two spacings downstream is held at that
+// velocity, so that what is downstream cannot push it back through the opening.
+enum class EmitterShape {
+  Disc,      // `center`, `radius`, flowing along `direction`
+  Rectangle  // the parallelogram `corner` + a `edge1` + b `edge2`, flowing along edge1 × edge2
+};
+
+struct EmitterDesc {
+  std::string name;  // the loader gives "emitter<i>" when unset
+  EmitterShape shape = EmitterShape::Disc;
+  Vec3d center{0, 0, 0};     // disc
+  double radius = 0.0;       // disc
+  Vec3d direction{1, 0, 0};  // disc; any length but zero
+  Vec3d corner{0, 0, 0};     // rectangle
+  Vec3d edge1{0, 0, 0};      // rectangle
+  Vec3d edge2{0, 0, 0};      // rectangle
+  double speed = 0.0;        // m/s
+  double start = 0.0;        // s
+  double end = 1e30;         // s; emits while start <= t < end
+};
+
+// The most emitters and outlets a scene may have: the stages that drive and drain them take
+// their geometry as one small value.
+inline constexpr std::size_t kMaxEmitters = 8;
+inline constexpr std::size_t kMaxOutlets = 8;
+
+// Flow out (scene "outlets"): fluid that enters `box` is removed and counted.
+struct OutletDesc {
+  std::string name;  // the loader gives "outlet<i>" when unset
+  AxisBox box;
+};
+
 struct FailureDesc {
   double maxDensityError = 0.5;  // compression ρ/ρ0 - 1 past which the run stops as failed
 };
@@ -270,6 +304,8 @@ struct Scene {
   TimeDesc time;
   OutputDesc output;
   std::vector<ProbeDesc> probes;
+  std::vector<EmitterDesc> emitters;
+  std::vector<OutletDesc> outlets;
   FailureDesc failure;
 };
 

@@ -155,7 +155,8 @@ class Simulation {
   double time() const;
   std::uint64_t stepCount() const;
   double lastDt() const;
-  std::uint64_t removedCount() const;  // fluid particles that left the domain
+  std::uint64_t removedCount() const;  // fluid particles that left the domain or drained
+  std::uint64_t emittedCount() const;  // fluid particles the emitters put in
   // Times the scene's "clamp" policy put a particle back into the domain (particle-steps).
   std::uint64_t clampedCount() const;
   std::uint64_t fluidCount() const;
@@ -165,6 +166,9 @@ class Simulation {
   const StepProfile& lastProfile() const;
   SolverStats lastSolve() const;
 
+  // Each emitter's and each outlet's fluid since the start, in the scene's order.
+  std::vector<FlowStats> emitterStats() const;
+  std::vector<FlowStats> outletStats() const;
   // The objects of the scene, as their engine has them now.
   std::vector<ObjectStats> objectStats() const;
   // Fluid particles outside the object that held them at the start (Meteer 2011, §9), counting

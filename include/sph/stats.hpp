@@ -18,6 +18,14 @@ struct ObjectStats {
   std::uint64_t brokenSprings = 0;
 };
 
+// The fluid an emitter has put in, or an outlet taken out, since the start.
+struct FlowStats {
+  std::string name;
+  std::uint64_t particles = 0;
+  double mass = 0.0;  // kg
+  double rate = 0.0;  // emitters: particles a second while it runs
+};
+
 struct FrameStats {
   double time = 0.0;        // s
   std::uint64_t steps = 0;  // steps taken since the start
@@ -31,7 +39,8 @@ struct FrameStats {
   double maxSpeed = 0.0;             // m/s
   std::uint64_t surfaceCount = 0;
   std::uint64_t leakedCount = 0;
-  std::uint64_t removedCount = 0;
+  std::uint64_t removedCount = 0;  // outside the domain or in an outlet, since the start
+  std::uint64_t emittedCount = 0;  // put in by the emitters, since the start
   std::uint64_t contactPairs = 0;  // fluid–object pairs in contact, last step
   // The incompressible solver's iterations summed over every step so far (0 for the weakly
   // compressible one), and its solves that stopped at max_iterations short of the tolerance.

@@ -1,6 +1,6 @@
 // Stage: build the uniform grid. Reads position, velocity, id and the solver's warm start.
-// Writes them reordered by cell, grid.cellStart and count. Particles outside the domain are
-// removed; returns how many.
+// Writes them reordered by cell, grid.cellStart and count. Particles outside the domain or in
+// an outlet are removed; returns how many.
 #pragma once
 
 #include <cmath>
@@ -13,10 +13,31 @@ namespace sph::fluid {
 
 namespace detail {
 
-SPH_HD bool insideDomain(const DomainParameters& d, Vec3 p) {
+SPH_HD bool insideBox(Vec3 lo, Vec3 hi, Vec3 p) {
   // Written so that NaN compares as outside.
-  return p.x >= d.min.x && p.x <= d.max.x && p.y >= d.min.y && p.y <= d.max.y && p.z >= d.min.z &&
-         p.z <= d.max.z;
+  return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
+}
+
+// The outlet p is in, or outlets.count.
+SPH_HD std::uint32_t outletOf(const Outlets& outlets, Vec3 p) {
+  for (std::uint32_t k = 0; k < outlets.count; ++k)
+    if (insideBox(outlets.min[k], outlets.max[k], p)) return k;
+  return outlets.count;
+}
+
+SPH_HD bool kept(const DomainParameters& d, Vec3 p) {
+  return insideBox(d.min, d.max, p) && outletOf(d.outlets, p) == d.outlets.count;
+}
+
+// Particles in each outlet.
+struct OutletCounts {
+  std::uint32_t n[kOutletSlots];
+};
+
+SPH_HD OutletCounts addCounts(const OutletCounts& a, const OutletCounts& b) {
+  OutletCounts sum;
+  for (std::uint32_t k = 0; k < kOutletSlots; ++k) sum.n[k] = a.n[k] + b.n[k];
+  return sum;
 }
 
 // The extent of the particles inside the domain.
@@ -38,6 +59,24 @@ SPH_HD Bounds merge(const Bounds& a, const Bounds& b) {
 
 }  // namespace detail
 
+// How many particles each outlet holds now (buildGrid removes them).
+template <class B>
+detail::OutletCounts countInOutlets(const FluidParticles<B>& fluid, const Outlets& outlets) {
+  const Vec4* position = fluid.position.data();
+  const Outlets o = outlets;
+  return B::reduce(
+      fluid.count, detail::OutletCounts{},
+      SPH_LAMBDA(std::size_t i) {
+        detail::OutletCounts one{};
+        const std::uint32_t k = detail::outletOf(o, xyz(position[i]));
+        if (k < o.count) one.n[k] = 1;
+        return one;
+      },
+      SPH_LAMBDA(const detail::OutletCounts& a, const detail::OutletCounts& b) {
+        return detail::addCounts(a, b);
+      });
+}
+
 template <class B>
 std::size_t buildGrid(FluidParticles<B>& fluid, Grid<B>& grid, const DomainParameters& domain) {
   const std::size_t n = fluid.count;
@@ -48,7 +87,7 @@ std::size_t buildGrid(FluidParticles<B>& fluid, Grid<B>& grid, const DomainParam
       n, detail::Bounds{Vec3{0, 0, 0}, Vec3{0, 0, 0}, false},
       SPH_LAMBDA(std::size_t i) {
         const Vec3 p = xyz(position[i]);
-        return detail::Bounds{p, p, detail::insideDomain(domain, p)};
+        return detail::Bounds{p, p, detail::kept(domain, p)};
       },
       SPH_LAMBDA(const detail::Bounds& a, const detail::Bounds& b) { return detail::merge(a, b); });
   grid.spec = bounds.any ? makeGrid(bounds.lo, bounds.hi, grid.cellSize)
@@ -59,7 +98,7 @@ std::size_t buildGrid(FluidParticles<B>& fluid, Grid<B>& grid, const DomainParam
   B::forEach(
       n, SPH_LAMBDA(std::size_t i) {
         const Vec3 p = xyz(position[i]);
-        cell[i] = detail::insideDomain(domain, p)
+        cell[i] = detail::kept(domain, p)
                       ? cellIndex(spec, clampToGrid(spec, cellCoordinate(spec, p)))
                       : outsideBin;
       });

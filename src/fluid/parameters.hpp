@@ -2,6 +2,8 @@
 // per-particle code (constant memory on the GPU, Meteer 2011, §5.3).
 #pragma once
 
+#include <cstdint>
+
 #include "sph/core/grid.hpp"
 #include "sph/core/options.hpp"
 #include "sph/core/vec.hpp"
@@ -31,13 +33,23 @@ struct FluidParameters {
 // does, the reference the first is tested and timed against. The GPU ignores it.
 enum class NeighborWalk { Batched, OneAtATime };
 
+constexpr std::uint32_t kOutletSlots = 8;
+
+// Boxes whose fluid is removed (the scene's outlets), and counted by box.
+struct Outlets {
+  std::uint32_t count = 0;
+  Vec3 min[kOutletSlots];
+  Vec3 max[kOutletSlots];
+};
+
 // The explicit domain: what lies outside is removed or clamped; the damped box of the
-// 2021 CUDA SPH tutorial reflects at its faces.
+// 2021 CUDA SPH tutorial reflects at its faces. What enters an outlet is removed.
 struct DomainParameters {
   Vec3 min, max;
   bool clampOutside;
   bool dampedBox;
   float damping;
+  Outlets outlets;
 };
 
 }  // namespace sph::fluid

@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "io/json_input.hpp"
+#include "io/scene_flow.hpp"
+#include "io/scene_geometry_checks.hpp"
 #include "io/scene_overrides.hpp"
 #include "io/scene_reader.hpp"
 #include "io/scene_schema.hpp"
@@ -20,10 +22,6 @@ namespace {
 using nlohmann::json;
 
 constexpr NumberRule kSupportRatio{1, 4, false, false};
-
-AxisBox readBox(const ObjectReader& in) {
-  return {in.requiredVec3("min"), in.requiredVec3("max")};
-}
 
 DomainDesc readDomain(const ObjectReader& in) {
   DomainDesc domain;
@@ -282,17 +280,6 @@ void checkObjectNames(const ReadContext& context, const Scene& scene) {
   }
 }
 
-void checkPointInDomain(const ReadContext& context, const Vec3d& x, const std::string& key,
-                        const AxisBox& domain) {
-  for (int axis = 0; axis < 3; ++axis) {
-    if (x[axis] < domain.min[axis] || x[axis] > domain.max[axis])
-      context.fail(key,
-                   "expected a point inside the domain box " + formatVec3(domain.min) + " to " +
-                       formatVec3(domain.max) + ", got " + formatVec3(x),
-                   {"domain.min", "domain.max"});
-  }
-}
-
 // Probes have names of their own (they head probes.csv's columns), read inside the domain, and
 // a force probe names an object.
 void checkProbes(const ReadContext& context, const Scene& scene) {
@@ -411,50 +398,6 @@ FailureDesc readFailure(const ObjectReader& in) {
   return failure;
 }
 
-// `path` names the object holding the box's "min" and "max".
-void checkBoxOrder(const ReadContext& context, const AxisBox& box, const std::string& path) {
-  const std::string minKey = joinKey(path, "min");
-  for (int axis = 0; axis < 3; ++axis) {
-    if (!(box.max[axis] > box.min[axis])) {
-      context.fail(joinKey(path, "max"),
-                   "expected a point above " + minKey + " " + formatVec3(box.min) +
-                       " on every axis, got " + formatVec3(box.max),
-                   {minKey});
-    }
-  }
-}
-
-void checkInsideDomain(const ReadContext& context, const AxisBox& box, const std::string& path,
-                       const AxisBox& domain) {
-  const std::pair<const char*, const Vec3d*> corners[] = {{"min", &box.min}, {"max", &box.max}};
-  for (const auto& [key, corner] : corners) {
-    for (int axis = 0; axis < 3; ++axis) {
-      const double x = (*corner)[axis];
-      if (x < domain.min[axis] || x > domain.max[axis]) {
-        context.fail(joinKey(path, key),
-                     "expected a point inside the domain box " + formatVec3(domain.min) + " to " +
-                         formatVec3(domain.max) + ", got " + formatVec3(*corner),
-                     {"domain.min", "domain.max"});
-      }
-    }
-  }
-}
-
-double lengthOf(const Vec3d& v) {
-  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-}
-
-// A round wall's radius and length carry layers a spacing apart: below one spacing the
-// sampling has nothing to lay out.
-void checkAtLeastSpacing(const ReadContext& context, double value, const std::string& key,
-                         double spacing) {
-  if (!(value >= spacing))
-    context.fail(key,
-                 "expected at least the fluid's spacing " + formatNumber(spacing) + " m, got " +
-                     formatNumber(value),
-                 {"fluid.spacing"});
-}
-
 void checkWall(const ReadContext& context, const WallDesc& w, const std::string& path,
                const Scene& scene) {
   const double spacing = scene.fluid.spacing;
@@ -475,21 +418,12 @@ void checkWall(const ReadContext& context, const WallDesc& w, const std::string&
       if (!(lengthOf(w.axis) > 0.0) || !std::isfinite(lengthOf(w.axis)))
         context.fail(joinKey(path, "axis"), "expected a direction, got " + formatVec3(w.axis));
       break;
-    case WallKind::Plane: {
+    case WallKind::Plane:
       checkPointInDomain(context, w.corner, joinKey(path, "corner"), scene.domain.box);
       checkAtLeastSpacing(context, lengthOf(w.edge1), joinKey(path, "edge1"), spacing);
       checkAtLeastSpacing(context, lengthOf(w.edge2), joinKey(path, "edge2"), spacing);
-      const Vec3d& a = w.edge1;
-      const Vec3d& b = w.edge2;
-      const Vec3d normal{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                         a[0] * b[1] - a[1] * b[0]};
-      if (!(lengthOf(normal) > 1e-6 * lengthOf(a) * lengthOf(b)))
-        context.fail(joinKey(path, "edge2"),
-                     "expected an edge not parallel to " + joinKey(path, "edge1") + " " +
-                         formatVec3(a) + ", got " + formatVec3(b),
-                     {joinKey(path, "edge1")});
+      checkNotParallel(context, w.edge1, w.edge2, joinKey(path, "edge1"), joinKey(path, "edge2"));
       break;
-    }
     case WallKind::Mesh:
       break;  // the file is read, and checked, as the walls are built
   }
@@ -541,12 +475,15 @@ Scene parseScene(const json& document, const std::string& sourceName,
   scene.time = readTime(root.object("time"));
   scene.output = readOutput(root.object("output"));
   scene.probes = readProbes(root);
+  scene.emitters = readEmitters(root);
+  scene.outlets = readOutlets(root);
   scene.failure = readFailure(root.object("failure"));
   checkGeometry(context, scene);
   checkObjectNames(context, scene);
   checkWallNames(context, scene);
   checkCoupling(context, scene);
   checkProbes(context, scene);
+  checkFlow(context, scene);
   return scene;
 }
 

@@ -72,6 +72,10 @@ KeySchema buildSchema() {
        object("output", {value("fps"), value("format"), value("probe_rate")}),
        arrayOf("probes", {value("name"), value("type"), vec3("position"), vec3("from"), vec3("to"),
                           value("object"), value("wall")}),
+       arrayOf("emitters", {value("name"), value("shape"), vec3("center"), value("radius"),
+                            vec3("direction"), vec3("corner"), vec3("edge1"), vec3("edge2"),
+                            value("speed"), value("start"), value("end")}),
+       arrayOf("outlets", {value("name"), vec3("min"), vec3("max")}),
        object("failure", {value("max_density_error")})});
 }
 

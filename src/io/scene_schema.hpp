@@ -80,6 +80,9 @@ inline constexpr NamedValue<FluidSide> kFluidSideNames[] = {{"outside", FluidSid
 inline constexpr NamedValue<ProbeKind> kProbeKindNames[] = {
     {"point", ProbeKind::Point}, {"level", ProbeKind::Level}, {"force", ProbeKind::Force}};
 
+inline constexpr NamedValue<EmitterShape> kEmitterShapeNames[] = {
+    {"disc", EmitterShape::Disc}, {"rectangle", EmitterShape::Rectangle}};
+
 inline constexpr NamedValue<ObjectMotion> kMotionNames[] = {
     {"rigid", ObjectMotion::Rigid},
     {"deformable", ObjectMotion::Deformable},

@@ -180,6 +180,25 @@ json probeToJson(const ProbeDesc& p) {
           {"wall", p.wall}};
 }
 
+// Only the keys of the emitter's shape: the loader refuses the other shape's.
+json emitterToJson(const EmitterDesc& e) {
+  json out = {{"name", e.name},
+              {"shape", nameOf(e.shape, kEmitterShapeNames)},
+              {"speed", e.speed},
+              {"start", e.start},
+              {"end", e.end}};
+  if (e.shape == EmitterShape::Disc) {
+    out["center"] = toJson(e.center);
+    out["radius"] = e.radius;
+    out["direction"] = toJson(e.direction);
+  } else {
+    out["corner"] = toJson(e.corner);
+    out["edge1"] = toJson(e.edge1);
+    out["edge2"] = toJson(e.edge2);
+  }
+  return out;
+}
+
 }  // namespace
 
 json sceneToJson(const Scene& scene) {
@@ -221,6 +240,20 @@ json sceneToJson(const Scene& scene) {
        [&] {
          json out = json::array();
          for (const ProbeDesc& p : scene.probes) out.push_back(probeToJson(p));
+         return out;
+       }()},
+      {"emitters",
+       [&] {
+         json out = json::array();
+         for (const EmitterDesc& e : scene.emitters) out.push_back(emitterToJson(e));
+         return out;
+       }()},
+      {"outlets",
+       [&] {
+         json out = json::array();
+         for (const OutletDesc& o : scene.outlets)
+           out.push_back(
+               {{"name", o.name}, {"min", toJson(o.box.min)}, {"max", toJson(o.box.max)}});
          return out;
        }()},
       {"failure", {{"max_density_error", scene.failure.maxDensityError}}},

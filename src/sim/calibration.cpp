@@ -75,13 +75,19 @@ double fallHeight(const Scene& scene) {
     top = std::max({top, height(block.box.min[up]), height(block.box.max[up])});
     floor = std::min({floor, height(block.box.min[up]), height(block.box.max[up])});
   }
+  for (const EmitterDesc& e : scene.emitters) {  // what enters there falls from there
+    const Vec3d& at = e.shape == EmitterShape::Disc ? e.center : e.corner;
+    top = std::max(top, height(at[up]));
+    floor = std::min(floor, height(at[up]));
+  }
   for (const WallDesc& wall : scene.walls) floor = std::min(floor, lowestHeight(wall, up, sign));
   if (scene.domain.dampedBox)
     floor = std::min({floor, height(scene.domain.box.min[up]), height(scene.domain.box.max[up])});
   return top > floor ? top - floor : 0.0;
 }
 
-// The fastest a block starts: its velocity, and its spin at the corners.
+// The fastest a block starts (its velocity, and its spin at the corners) or an emitter puts
+// fluid in.
 double largestBlockSpeed(const Scene& scene) {
   const auto norm = [](const Vec3d& u) {
     return std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
@@ -93,6 +99,7 @@ double largestBlockSpeed(const Scene& scene) {
                              0.5 * (block.box.max[2] - block.box.min[2])};
     v = std::max(v, norm(block.velocity) + norm(block.angularVelocity) * norm(halfDiagonal));
   }
+  for (const EmitterDesc& e : scene.emitters) v = std::max(v, e.speed);
   return v;
 }
 
@@ -253,8 +260,19 @@ fluid::DomainParameters domainParameters(const Scene& scene) {
   auto v = [](const Vec3d& a) {
     return Vec3{static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2])};
   };
-  return fluid::DomainParameters{v(d.box.min), v(d.box.max), d.outside == OutsidePolicy::Clamp,
-                                 d.dampedBox, static_cast<float>(d.damping)};
+  fluid::DomainParameters out{v(d.box.min),
+                              v(d.box.max),
+                              d.outside == OutsidePolicy::Clamp,
+                              d.dampedBox,
+                              static_cast<float>(d.damping),
+                              {}};
+  static_assert(kMaxOutlets <= fluid::kOutletSlots, "an outlet the stage has no slot for");
+  for (const OutletDesc& o : scene.outlets) {
+    out.outlets.min[out.outlets.count] = v(o.box.min);
+    out.outlets.max[out.outlets.count] = v(o.box.max);
+    ++out.outlets.count;
+  }
+  return out;
 }
 
 EngineSetup engineSetup(const Scene& scene, const Calibration& calibration, const Walls& walls) {

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "fluid/drive_inflow.hpp"
 #include "fluid/measure_surface.hpp"
 #include "fluid/stages.hpp"
 #include "fluid/write_for_drawing.hpp"
@@ -71,13 +72,11 @@ class EngineImpl final : public FluidEngine {
     B::upload(fluid_.velocity, velocity.data(), n);
     B::upload(fluid_.acceleration, zero.data(), n);
     B::upload(fluid_.id, id.data(), n);
-    for (auto* b : {&fluid_.scratch4, &fluid_.pressureState}) b->resize(n);
-    for (auto* b : {&fluid_.cell, &fluid_.order, &fluid_.scratchId, &fluid_.neighborCount})
-      b->resize(n);
     fluid_.density.resize(n);
     fluid_.pressure.resize(n);
     fluid_.neighborStride = setup.neighborStride;
-    fluid_.neighbors.resize(n * setup.neighborStride);
+    resizeWorkArrays(n);
+    drained_.assign(domain_.outlets.count, 0);
     grid_.cellSize = params_.h;
     fluid::prepareBoundary(boundary_, setup.walls, static_cast<std::uint32_t>(n), params_);
   }
@@ -86,7 +85,43 @@ class EngineImpl final : public FluidEngine {
   std::size_t fluidCount() const override { return fluid_.count; }
   std::size_t wallCount() const override { return boundary_.count; }
 
-  std::size_t buildGrid() override { return fluid::buildGrid(fluid_, grid_, domain_); }
+  std::size_t buildGrid() override {
+    if (domain_.outlets.count != 0) {
+      const auto inOutlets = fluid::countInOutlets(fluid_, domain_.outlets);
+      for (std::size_t k = 0; k < drained_.size(); ++k) drained_[k] += inOutlets.n[k];
+    }
+    return fluid::buildGrid(fluid_, grid_, domain_);
+  }
+  std::vector<std::uint64_t> drainedByOutlet() const override { return drained_; }
+  void driveInflow(const fluid::InflowZones& zones) override { fluid::driveInflow(fluid_, zones); }
+
+  // Appends to the state arrays through the host: emitters add a layer every few steps, and
+  // the copies cost far less than a step.
+  void addParticles(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
+                    std::uint32_t firstId) override {
+    const std::size_t n = fluid_.count;
+    const std::size_t added = positions.size();
+    if (added == 0) return;
+    const std::size_t total = n + added;
+    const auto extend = [&](auto& buffer, auto fill) {
+      using T = decltype(fill(std::size_t{0}));
+      std::vector<T> host(total);
+      B::download(buffer, host.data(), n);
+      for (std::size_t k = 0; k < added; ++k) host[n + k] = fill(k);
+      B::upload(buffer, host.data(), total);
+    };
+    extend(fluid_.position, [&](std::size_t k) { return makeVec4(positions[k]); });
+    extend(fluid_.velocity, [&](std::size_t k) { return makeVec4(velocities[k]); });
+    extend(fluid_.acceleration, [](std::size_t) { return Vec4{0, 0, 0, 0}; });
+    extend(fluid_.id, [&](std::size_t k) { return std::uint32_t(firstId + k); });
+    extend(fluid_.density, [&](std::size_t) { return params_.restDensity; });
+    extend(fluid_.pressure, [](std::size_t) { return 0.0f; });
+    if (fluid_.warmStart.size() != 0)
+      extend(fluid_.warmStart, [](std::size_t) { return Vec4{0, 0, 0, 0}; });
+    fluid_.count = total;
+    resizeWorkArrays(total);
+    growByIdArrays(firstId + added);
+  }
   void computeDensityAndPressure() override {
     fluid::computeDensityAndPressure(fluid_, grid_, boundary_, objectBoundary_, params_, walk_);
   }
@@ -197,6 +232,29 @@ class EngineImpl final : public FluidEngine {
   }
 
  private:
+  // The arrays every step writes before it reads them, for n particles.
+  void resizeWorkArrays(std::size_t n) {
+    for (auto* b : {&fluid_.scratch4, &fluid_.pressureState}) b->resize(n);
+    for (auto* b : {&fluid_.cell, &fluid_.order, &fluid_.scratchId, &fluid_.neighborCount})
+      b->resize(n);
+    fluid_.neighbors.resize(n * fluid_.neighborStride);
+  }
+  // The arrays indexed by particle id, to hold ids below `ids`: new particles have no external
+  // acceleration and no container.
+  void growByIdArrays(std::size_t ids) {
+    const auto grow = [&](auto& buffer, auto value) {
+      const std::size_t had = buffer.size();
+      if (had == 0 || had >= ids) return;
+      std::vector<decltype(value)> host(ids, value);
+      B::download(buffer, host.data(), had);
+      B::upload(buffer, host.data(), ids);
+    };
+    grow(fluid_.externalById, Vec4{0, 0, 0, 0});
+    grow(containment_.containerById, std::int32_t{-1});
+    grow(containment_.insideById, std::uint32_t{0});
+    grow(containment_.firstExitById, Vec4{0, 0, 0, 0});
+  }
+
   fluid::FluidParameters params_;
   fluid::DomainParameters domain_;
   fluid::NeighborWalk walk_;
@@ -211,6 +269,7 @@ class EngineImpl final : public FluidEngine {
   typename B::template Buffer<Vec4> wallForce_;
   typename B::template Buffer<std::uint8_t> watchedWall_;
   typename B::template Buffer<PointSums> probeSums_;
+  std::vector<std::uint64_t> drained_;  // by outlet, since the start
 };
 
 }  // namespace sph::sim

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fluid/dfsph_settings.hpp"
+#include "fluid/drive_inflow.hpp"
 #include "fluid/measure_step.hpp"
 #include "fluid/parameters.hpp"
 #include "interaction/object_particles.hpp"
@@ -72,7 +73,15 @@ class FluidEngine {
   virtual void prepareSolver() = 0;
   virtual fluid::SolverReport solve(const fluid::SolverSettings& settings,
                                     fluid::SolverTarget target, float dt) = 0;
+  // Flow in: before integrate, the fluid just past each emitter takes its velocity.
+  virtual void driveInflow(const fluid::InflowZones& zones) = 0;
   virtual std::size_t integrate(float dt) = 0;  // returns the particles clamped
+  // Flow in: new particles, their ids firstId, firstId + 1, ... (after the walls' and the
+  // objects'), at rest density, to be sorted in by the next buildGrid.
+  virtual void addParticles(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
+                            std::uint32_t firstId) = 0;
+  // Flow out: the particles each outlet has removed since the start (buildGrid removes them).
+  virtual std::vector<std::uint64_t> drainedByOutlet() const = 0;
   // Outside the step: |∇c| at the present positions into acceleration.w (the surface flags),
   // from the last density pass's neighbours.
   virtual void measureSurface() = 0;

@@ -32,9 +32,13 @@ void Simulation::step(double until) {
   profile.densitySolve = timedMs([&] { s.solveDensity(); });
   profile.interaction += timedMs([&] { s.collectObjectForces(); });
   profile.probes = timedMs([&] { s.collectWallForces(); });
-  profile.integrate = timedMs([&] { s.clamped += engine.integrate(float(s.dt)); });
+  profile.integrate = timedMs([&] {
+    s.driveInflow();
+    s.clamped += engine.integrate(float(s.dt));
+  });
   profile.objects = timedMs([&] { s.advanceObjects(); });
   s.time = (s.dt == until - s.time) ? until : s.time + s.dt;
+  profile.integrate += timedMs([&] { s.emit(); });
   ++s.steps;
   profile.probes += timedMs([&] { s.sampleProbes(); });
 }
@@ -70,6 +74,29 @@ double Simulation::lastDt() const {
 }
 std::uint64_t Simulation::removedCount() const {
   return impl_->removed;
+}
+std::uint64_t Simulation::emittedCount() const {
+  std::uint64_t n = 0;
+  for (std::size_t k = 0; k < impl_->emitters.size(); ++k) n += impl_->emitters.emitted(k);
+  return n;
+}
+std::vector<FlowStats> Simulation::emitterStats() const {
+  const Impl& s = *impl_;
+  std::vector<FlowStats> out;
+  for (std::size_t k = 0; k < s.emitters.size(); ++k) {
+    const std::uint64_t n = s.emitters.emitted(k);
+    out.push_back(
+        {s.emitters.name(k), n, double(n) * s.calibration.mass, s.emitters.particleRate(k)});
+  }
+  return out;
+}
+std::vector<FlowStats> Simulation::outletStats() const {
+  const Impl& s = *impl_;
+  const std::vector<std::uint64_t> drained = s.engine->drainedByOutlet();
+  std::vector<FlowStats> out;
+  for (std::size_t k = 0; k < s.scene.outlets.size(); ++k)
+    out.push_back({s.scene.outlets[k].name, drained[k], double(drained[k]) * s.calibration.mass});
+  return out;
 }
 std::uint64_t Simulation::clampedCount() const {
   return impl_->clamped;

@@ -12,6 +12,7 @@
 
 #include "backend/cpu_parallel.hpp"
 #include "sim/calibration.hpp"
+#include "sim/emitters.hpp"
 #include "sim/fluid_engine.hpp"
 #include "sim/object_clearance.hpp"
 #include "sim/object_runner.hpp"
@@ -70,6 +71,10 @@ struct Simulation::Impl {
   std::vector<Vec3> fluidForceOnWall;       // by wall, last step; only when a probe asks
   std::vector<std::size_t> wallOfParticle;  // in the engine's wall order
   std::unique_ptr<sim::ProbeSampler> probes;
+  // Flow in: the emitters, and the id the next particle they put gets (after the objects').
+  sim::Emitters emitters;
+  fluid::InflowZones inflowZones;
+  std::uint32_t nextId = 0;
   // The incompressible solver's last solves, and its counts since the start.
   fluid::SolverReport divergenceReport;
   fluid::SolverReport densityReport;
@@ -79,7 +84,7 @@ struct Simulation::Impl {
     std::uint64_t unconvergedSolves = 0;
   } solverTotals;
 
-  Impl(const Scene& s, const SimulationOptions& options) : scene(s) {
+  Impl(const Scene& s, const SimulationOptions& options) : scene(s), emitters(s) {
     backend::requireCompiledInstructionSet();
     sim::refuseIfTooLarge(scene, sim::availableBytes());  // before anything large is made
     calibration = sim::calibrate(scene);
@@ -115,6 +120,8 @@ struct Simulation::Impl {
                                                     scene.objectEngine.ownThread);
     }
     if (probesWallForces()) mapWallParticles(walls);
+    inflowZones = emitters.zones();
+    nextId = std::uint32_t(initialFluid + engine->wallCount() + calibration.objectParticles);
     // Density and pressure of the initial state, so stats and frame 0 are meaningful.
     removed += engine->buildGrid();
     engine->computeDensityAndPressure();
@@ -165,6 +172,19 @@ struct Simulation::Impl {
     }
     for (std::size_t w = 0; w < fluidForceOnWall.size(); ++w)
       fluidForceOnWall[w] = Vec3{float(sum[3 * w]), float(sum[3 * w + 1]), float(sum[3 * w + 2])};
+  }
+
+  // Flow in (sim/emitters.hpp): the fluid just past each emitter moves at its velocity, and
+  // the layers due by now enter.
+  void driveInflow() {
+    if (!emitters.empty()) engine->driveInflow(inflowZones);
+  }
+  void emit() {
+    if (emitters.empty()) return;
+    const sim::NewParticles fresh = emitters.emit(time);
+    if (fresh.position.empty()) return;
+    engine->addParticles(fresh.position, fresh.velocity, nextId);
+    nextId += std::uint32_t(fresh.position.size());
   }
 
   // Contacts are found through the fluid's grid (cell edge h) from the object particles.
@@ -346,7 +366,9 @@ struct Simulation::Impl {
     // not catch (a fixed step too long for the stiffness), not a result.
     const double speedLimit =
         10.0 * std::max(calibration.soundSpeed, 10.0 * calibration.maxExpectedSpeed);
-    if (m.maxSpeed > speedLimit || (engine->fluidCount() == 0 && initialFluid > 0))
+    // A scene with flow in or out may run empty.
+    const bool flows = !scene.emitters.empty() || !scene.outlets.empty();
+    if (m.maxSpeed > speedLimit || (engine->fluidCount() == 0 && initialFluid > 0 && !flows))
       failRunaway(m, speedLimit);
     const TimeDesc& t = scene.time;
     double next =

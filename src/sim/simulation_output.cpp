@@ -48,10 +48,13 @@ struct FrameBuilder {
   }
 };
 
-// Fluid ids are 0 .. initialFluid-1 with gaps where particles were removed.
+// In id order: 0 .. initialFluid-1 with gaps where particles were removed, then those emitters
+// put in (their ids after the objects').
 void appendFluid(FrameBuilder& b, const sim::HostParticles& f, std::uint64_t initialFluid,
                  float surfaceThreshold) {
-  std::vector<std::int64_t> slotOfId(initialFluid, -1);
+  std::uint64_t ids = initialFluid;
+  for (std::uint32_t id : f.id) ids = std::max<std::uint64_t>(ids, std::uint64_t(id) + 1);
+  std::vector<std::int64_t> slotOfId(ids, -1);
   for (std::size_t i = 0; i < f.id.size(); ++i) slotOfId[f.id[i]] = static_cast<std::int64_t>(i);
   for (std::int64_t slot : slotOfId) {
     if (slot < 0) continue;
@@ -212,6 +215,7 @@ FrameStats Simulation::Impl::statsWithoutParticles(const Simulation& sim) const 
   out.boundaryCount = engine->wallCount();
   out.leakedCount = sim.leakedCount();
   out.removedCount = removed;
+  out.emittedCount = sim.emittedCount();
   out.contactPairs = contactPairs;
   out.densityIterations = solverTotals.densityIterations;
   out.divergenceIterations = solverTotals.divergenceIterations;

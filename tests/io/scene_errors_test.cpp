@@ -285,5 +285,44 @@ TEST(SceneErrors, BadProbesNameTheKey) {
             "scenes/x.json: output.probe_rate: expected a number in (0, 10000000], got 0");
 }
 
+TEST(SceneErrors, BadEmittersAndOutletsNameTheKey) {
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/0/shape", "square")),
+            "scenes/x.json: emitters[0].shape: expected one of \"disc\", \"rectangle\", got "
+            "\"square\"");
+  EXPECT_EQ(parseError(without(completeSceneJson(), "/emitters/0/speed")),
+            "scenes/x.json: emitters[0].speed: required key is missing (a speed in m/s)");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/0/speed", 0)),
+            "scenes/x.json: emitters[0].speed: expected a positive number, got 0");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/0/edge1", {0, 1, 0})),
+            "scenes/x.json: emitters[0].edge1: not a key of a disc emitter; its keys are name, "
+            "shape, speed, start, end, center, radius, direction");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/0/radius", 0.001)),
+            "scenes/x.json: emitters[0].radius: expected at least the fluid's spacing 0.02 m, got "
+            "0.001");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/0/direction", {0, 0, 0})),
+            "scenes/x.json: emitters[0].direction: expected a direction, got [0, 0, 0]");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/0/center", {0.2, 1.5, 0})),
+            "scenes/x.json: emitters[0].center: expected a point inside the domain box "
+            "[-0.1, 0, -0.2] to [1.5, 1.2, 0.3], got [0.2, 1.5, 0]");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/0/end", 0.1)),
+            "scenes/x.json: emitters[0].end: expected a time after emitters[0].start 0.1 s, got "
+            "0.1");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/1/edge2", {0, 0.4, 0})),
+            "scenes/x.json: emitters[1].edge2: expected an edge not parallel to emitters[1].edge1 "
+            "[0, 0.2, 0], got [0, 0.4, 0]");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/1/name", "tap")),
+            "scenes/x.json: emitters[1].name: expected a name no other emitter has, got \"tap\" "
+            "(also emitters[0])");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/outlets/0/max", {1.1, 0.1, 0.25})),
+            "scenes/x.json: outlets[0].max: expected a point above outlets[0].min "
+            "[1.2, 0, -0.15] on every axis, got [1.1, 0.1, 0.25]");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/outlets/0/max", {1.6, 0.1, 0.25})),
+            "scenes/x.json: outlets[0].max: expected a point inside the domain box "
+            "[-0.1, 0, -0.2] to [1.5, 1.2, 0.3], got [1.6, 0.1, 0.25]");
+  nlohmann::json many = completeSceneJson();
+  for (int i = 0; i < 8; ++i) many["outlets"].push_back(many["outlets"][0]);
+  EXPECT_EQ(parseError(many), "scenes/x.json: outlets: expected at most 8 outlets, got 9");
+}
+
 }  // namespace
 }  // namespace sph::io

@@ -239,6 +239,16 @@ void expectEveryKey(const json& value, const KeySchema& schema, const std::strin
     for (const std::string& key : keys)
       EXPECT_TRUE(value.contains(key)) << joinKey(path, key) << " is not written";
     EXPECT_EQ(value.size(), keys.size()) << path << " has keys of another type of wall";
+  } else if (schema.shape == KeySchema::Shape::Object && path.rfind("emitters[", 0) == 0) {
+    ASSERT_TRUE(value.is_object() && value.contains("shape")) << path;
+    std::vector<std::string> keys{"name", "shape", "speed", "start", "end"};
+    if (value["shape"] == "disc")
+      keys.insert(keys.end(), {"center", "radius", "direction"});
+    else
+      keys.insert(keys.end(), {"corner", "edge1", "edge2"});
+    for (const std::string& key : keys)
+      EXPECT_TRUE(value.contains(key)) << joinKey(path, key) << " is not written";
+    EXPECT_EQ(value.size(), keys.size()) << path << " has keys of the other shape";
   } else if (schema.shape == KeySchema::Shape::Object) {
     ASSERT_TRUE(value.is_object()) << path;
     for (const KeySchema& key : schema.children) {

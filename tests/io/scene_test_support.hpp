@@ -79,6 +79,11 @@ inline nlohmann::json completeSceneJson() {
                {"name": "gauge", "type": "level", "from": [0.5, 0, 0], "to": [0.5, 1, 0]},
                {"name": "on_vessel", "type": "force", "object": "vessel"},
                {"name": "on_crate", "type": "force", "wall": "crate"}],
+    "emitters": [{"name": "tap", "shape": "disc", "center": [0.2, 0.9, 0], "radius": 0.05,
+                  "direction": [0, -1, 0], "speed": 0.4, "start": 0.1, "end": 1.5},
+                 {"name": "inlet", "shape": "rectangle", "corner": [0, 0.1, -0.1],
+                  "edge1": [0, 0.2, 0], "edge2": [0, 0, 0.2], "speed": 0.25}],
+    "outlets": [{"name": "drain", "min": [1.2, 0, -0.15], "max": [1.4, 0.1, 0.25]}],
     "failure": {"max_density_error": 0.2}
   })");
 }
@@ -207,6 +212,30 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.probes[i].to, b.probes[i].to);
     EXPECT_EQ(a.probes[i].object, b.probes[i].object);
     EXPECT_EQ(a.probes[i].wall, b.probes[i].wall);
+  }
+  ASSERT_EQ(a.emitters.size(), b.emitters.size());
+  for (std::size_t i = 0; i < a.emitters.size(); ++i) {
+    const EmitterDesc& x = a.emitters[i];
+    const EmitterDesc& y = b.emitters[i];
+    EXPECT_EQ(x.name, y.name);
+    EXPECT_EQ(x.shape, y.shape);
+    EXPECT_EQ(x.speed, y.speed);
+    EXPECT_EQ(x.start, y.start);
+    EXPECT_EQ(x.end, y.end);
+    if (x.shape == EmitterShape::Disc) {
+      EXPECT_EQ(x.center, y.center);
+      EXPECT_EQ(x.radius, y.radius);
+      EXPECT_EQ(x.direction, y.direction);
+    } else {
+      EXPECT_EQ(x.corner, y.corner);
+      EXPECT_EQ(x.edge1, y.edge1);
+      EXPECT_EQ(x.edge2, y.edge2);
+    }
+  }
+  ASSERT_EQ(a.outlets.size(), b.outlets.size());
+  for (std::size_t i = 0; i < a.outlets.size(); ++i) {
+    EXPECT_EQ(a.outlets[i].name, b.outlets[i].name);
+    expectBoxesEqual(a.outlets[i].box, b.outlets[i].box);
   }
   EXPECT_EQ(a.failure.maxDensityError, b.failure.maxDensityError);
 }
