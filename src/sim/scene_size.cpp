@@ -76,6 +76,14 @@ double wallParticles(const WallDesc& w, double d) {
   return 1.5 * w.layers * area / (d * d);
 }
 
+double emitterParallelogramArea(const EmitterDesc& e) {
+  const Vec3d& a = e.edge1;
+  const Vec3d& b = e.edge2;
+  const double x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2],
+               z = a[0] * b[1] - a[1] * b[0];
+  return std::sqrt(x * x + y * y + z * z);
+}
+
 std::string describeCount(double n) {
   char text[64];
   std::snprintf(text, sizeof text, "%.3g", n);
@@ -95,6 +103,15 @@ SceneSize estimateSize(const Scene& scene) {
   const double d = scene.fluid.spacing;
   for (const FluidBlock& block : scene.fluid.blocks) size.fluidParticles += boxCells(block.box, d);
   for (const WallDesc& wall : scene.walls) size.wallParticles += wallParticles(wall, d);
+  // What the emitters put in over the run, no more than the domain holds at rest density.
+  double emitted = 0.0;
+  for (const EmitterDesc& e : scene.emitters) {
+    const double area =
+        e.shape == EmitterShape::Disc ? kPi * e.radius * e.radius : emitterParallelogramArea(e);
+    const double running = std::max(0.0, std::min(e.end, scene.time.duration) - e.start);
+    emitted += area / (d * d) * std::ceil(running * e.speed / d);
+  }
+  size.fluidParticles += std::min(emitted, boxCells(scene.domain.box, d));
   size.bytes =
       size.fluidParticles * kBytesPerFluidParticle + size.wallParticles * kBytesPerWallParticle;
   return size;

@@ -85,5 +85,13 @@ TEST(Determinism, TheRunMovedParticles) {
   EXPECT_NE(start.position, end.position);
 }
 
+// Flow in and out: the emitters' layers join the sorted arrays and the outlet drains them, the
+// same on 1 and 2 threads (the shipped pipe, past its first layers and its first drained).
+TEST(Determinism, WithEmittersAndOutletsSameBytes) {
+  const Scene scene = shippedScene("pipe_flow.json");
+  const ParticleFrame a = squeeze(scene, 0.03, 2, 40);
+  expectIdentical(a, squeeze(scene, 0.03, 1, 40));
+}
+
 }  // namespace
 }  // namespace sph

@@ -73,6 +73,22 @@ TEST(Failure, ASceneLargerThanTheMachineIsRefusedBeforeAnythingIsMade) {
   }
   EXPECT_NO_THROW(sim::refuseIfTooLarge(testing::restingTank(0.01, 0.1, 0.1), 1e7));
   EXPECT_THROW(sim::refuseIfTooLarge(testing::restingTank(0.01, 0.1, 0.1), 1e5), InputError);
+  // An emitter's particles count for what it puts in over the run, up to what the domain holds.
+  Scene pumped = testing::restingTank(0.01, 0.1, 0.1);
+  EmitterDesc e;
+  e.center = {0.05, 0.05, 0.05};
+  e.radius = 0.05;
+  e.speed = 1.0;
+  pumped.emitters.push_back(e);
+  pumped.time.duration = 1.0;
+  const double before = sim::estimateSize(testing::restingTank(0.01, 0.1, 0.1)).fluidParticles;
+  const double emitted = sim::estimateSize(pumped).fluidParticles - before;
+  EXPECT_NEAR(emitted, 3.14159265 * 25.0 * 100.0, 1.0);  // (π 5²) a layer, 100 layers
+  pumped.time.duration = 1e6;
+  const AxisBox& domain = pumped.domain.box;
+  double domainCells = 1.0;
+  for (int a = 0; a < 3; ++a) domainCells *= std::round((domain.max[a] - domain.min[a]) / 0.01);
+  EXPECT_EQ(sim::estimateSize(pumped).fluidParticles - before, domainCells);
 }
 
 TEST(Failure, UnderivableSoundSpeedIsAnInputError) {
