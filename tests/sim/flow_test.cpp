@@ -3,8 +3,10 @@
 // carries its flow from the emitter to the outlet without losing a particle through its wall.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "backends.hpp"
 #include "io/scene_loader.hpp"
@@ -161,6 +163,66 @@ TEST(PipeFlow, CarriesTheFlowFromTheEmitterToTheOutletWithoutLosingAParticle) {
   }
   EXPECT_GT(sim.emittedCount(), 0u);
   EXPECT_GT(sim.outletStats().at(0).particles, 0u);
+}
+
+// Hagen-Poiseuille flow (scenes/poiseuille_pipe.json): a viscous liquid pumped through a pipe
+// of radius R at a mean speed U. At steady state, half way along, its velocity is the parabola
+// 2U(1 - r²/R²) and its pressure falls by 8 μ U / R² a metre: the viscosity in physical units
+// (Müller's model, μ in Pa·s) against no-slip walls (wall_friction 2: the wall takes the
+// opposite of the fluid's velocity).
+TEST(Poiseuille, PipeFlowHasTheParabolicProfileAndThePressureDrop) {
+  const Scene scene =
+      io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/poiseuille_pipe.json");
+  const double radius = 0.02, mean = scene.emitters.at(0).speed, mu = scene.fluid.viscosity;
+  Simulation sim(scene);
+  const std::uint64_t initial = sim.fluidCount();
+  if (testing::kSanitized) {
+    sim.advanceTo(0.05);
+    EXPECT_EQ(initial + sim.emittedCount(), sim.fluidCount() + sim.outletStats().at(0).particles);
+    return;
+  }
+  sim.advanceTo(1.5);  // about 1.5 R² / ν: the profile has settled
+  sim.takeProbeRows();
+  constexpr int kBins = 8;  // rings of equal width, R / 8
+  std::vector<double> speedSum(kBins, 0.0);
+  std::vector<int> count(kBins, 0);
+  for (double t : {1.5, 1.75, 2.0}) {
+    sim.advanceTo(t);
+    const ParticleFrame frame = sim.frame(false);
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+      const float* x = &frame.position[3 * i];
+      if (x[0] < 0.08 || x[0] > 0.12) continue;  // half way along, two diameters from either end
+      const double r = std::hypot(x[1], x[2]);
+      const int bin = std::min(kBins - 1, int(r / radius * kBins));
+      speedSum[bin] += frame.velocity[3 * i];
+      ++count[bin];
+    }
+  }
+  const double peak = 2.0 * mean;
+  for (int b = 0; b < kBins; ++b) {
+    ASSERT_GT(count[b], 0) << "ring " << b;
+    // The parabola's mean over the ring: 2U(1 - (r_in² + r_out²) / (2R²)).
+    const double inner = double(b) / kBins, outer = double(b + 1) / kBins;
+    const double expected = peak * (1.0 - 0.5 * (inner * inner + outer * outer));
+    EXPECT_NEAR(speedSum[b] / count[b], expected, 0.05 * peak)
+        << "ring " << b << " (r/R " << inner << " to " << outer << ")";
+  }
+  // Two point probes on the axis, 8 cm apart, averaged over the last half second.
+  const std::vector<std::string>& columns = sim.probeColumns();
+  const auto column = [&](const std::string& name) {
+    return std::size_t(std::find(columns.begin(), columns.end(), name) - columns.begin());
+  };
+  const std::size_t up = column("upstream_pressure_Pa"), down = column("downstream_pressure_Pa");
+  ASSERT_LT(up, columns.size());
+  ASSERT_LT(down, columns.size());
+  double drop = 0.0;
+  const std::vector<ProbeRow> rows = sim.takeProbeRows();
+  ASSERT_GT(rows.size(), 40u);
+  for (const ProbeRow& row : rows) drop += row.values[up] - row.values[down];
+  drop /= double(rows.size());
+  const double expectedDrop = 8.0 * mu * mean * 0.08 / (radius * radius);
+  EXPECT_NEAR(drop, expectedDrop, 0.05 * expectedDrop);
+  EXPECT_EQ(initial + sim.emittedCount(), sim.fluidCount() + sim.outletStats().at(0).particles);
 }
 
 }  // namespace
