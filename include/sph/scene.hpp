@@ -113,6 +113,8 @@ struct FluidDesc {
   KernelKind kernel = KernelKind::Muller;
   EquationOfState eos = EquationOfState::Linear;
   bool clampNegativePressure = true;
+  DensityModel density = DensityModel::Summation;
+  double densityDiffusion = 0.1;  // δ of δ-SPH, with continuity density
   PressureForm pressureForm = PressureForm::Symmetric;
   ViscosityModel viscosityModel = ViscosityModel::Artificial;
   double viscosity = 0.0;       // μ (Pa·s) for Müller; α (dimensionless) for artificial

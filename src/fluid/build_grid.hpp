@@ -1,4 +1,5 @@
-// Stage: build the uniform grid. Reads position, velocity, id and the solver's warm start.
+// Stage: build the uniform grid. Reads position, velocity, id, the solver's warm start and the
+// density where it is state (continuity).
 // Writes them reordered by cell, grid.cellStart and count. Particles outside the domain or in
 // an outlet are removed; returns how many.
 #pragma once
@@ -114,6 +115,10 @@ std::size_t buildGrid(FluidParticles<B>& fluid, Grid<B>& grid, const DomainParam
   fluid.velocity.swap(fluid.scratch4);
   B::gather(fluid.id.data(), fluid.order.data(), kept, fluid.scratchId.data());
   fluid.id.swap(fluid.scratchId);
+  if (fluid.densityIsState) {
+    B::gather(fluid.density.data(), fluid.order.data(), kept, fluid.scratchDensity.data());
+    fluid.density.swap(fluid.scratchDensity);
+  }
   if (fluid.warmStart.size() != 0) {
     B::gather(fluid.warmStart.data(), fluid.order.data(), kept, fluid.scratch4.data());
     fluid.warmStart.swap(fluid.scratch4);

@@ -1,6 +1,6 @@
 // Stage: density with pressure in one pass (Meteer 2011, Algorithm 1). Reads position, the
 // walls and the objects taking part as boundary particles (none: objects.count 0). Writes
-// density, pressure, pressureState and the neighbour lists.
+// density (unless it is state: continuity), pressure, pressureState and the neighbour lists.
 #pragma once
 
 #include "fluid/density_pressure_batched.hpp"
@@ -33,6 +33,7 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
   std::uint32_t* neighborCount = fluid.neighborCount.data();
   const float h2 = params.h * params.h;
   const FluidParameters p = params;
+  const bool integrated = fluid.densityIsState;
 
   B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
@@ -56,7 +57,9 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
           const Vec4 xk = readOnly(object + k);
           wallSum += xk.w * kernels.W(lengthSquared(xi - xyz(xk)));
         });
-        const PressureState s = pressureStateFromSums(sum, wallSum, p);
+        // Continuity keeps the density integrate gave; the sums still list the neighbours.
+        const PressureState s =
+            pressureStateFromDensity(integrated ? density[i] : densityFromSums(sum, wallSum, p), p);
         density[i] = s.density;
         pressure[i] = s.pressure;
         state[i] = packed(s);

@@ -53,6 +53,7 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
   float* stateC = fluid.batchPressure.data();
   float* stateD = fluid.batchDensity.data();
   const FluidParameters p = params;
+  const bool integrated = fluid.densityIsState;
   const FloatBatch h2(params.h * params.h);
   const std::uint32_t stride = fluid.neighborStride;
   std::uint32_t* neighbors = fluid.neighbors.data();
@@ -111,7 +112,8 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
           const FloatBatch r2 = dot(rib, rib);
           wallSum += loadBatch(ov, b) * kernelWhere(kernels, r2, candidates && r2 < h2);
         });
-    const PressureState s = pressureStateFromSums(sumLanes(sum), sumLanes(wallSum), p);
+    const PressureState s = pressureStateFromDensity(
+        integrated ? density[i] : densityFromSums(sumLanes(sum), sumLanes(wallSum), p), p);
     density[i] = s.density;
     pressure[i] = s.pressure;
     state[i] = packed(s);

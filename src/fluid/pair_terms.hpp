@@ -48,15 +48,17 @@ SPH_HD PressureState unpackPressureState(const Vec4& v) {
   return PressureState{v.x, v.y, v.z, v.w};
 }
 
-// Density and pressure from the kernel sums over the fluid (Meteer 2011, eq. 4, the particle
-// itself included) and over the walls, each wall particle counting with the mass ρ0 ψ_b of the
-// fluid it stands for (Akinci et al. 2012, eq. 6).
-SPH_HD PressureState pressureStateFromSums(float fluidKernelSum, float wallVolumeKernelSum,
-                                           const FluidParameters& p) {
-  const float rho = p.mass * fluidKernelSum + p.restDensity * wallVolumeKernelSum;
+// Pressure from density; the density from the kernel sums over the fluid (Meteer 2011, eq. 4,
+// the particle itself included) and over the walls, each wall particle counting with the mass
+// ρ0 ψ_b of the fluid it stands for (Akinci et al. 2012, eq. 6).
+SPH_HD PressureState pressureStateFromDensity(float rho, const FluidParameters& p) {
   const float pressure =
       pressureFromDensity(p.eos, rho, p.restDensity, p.stiffness, p.clampNegativePressure);
   return PressureState{pressureOverDensitySquared(pressure, rho), 1.0f / rho, pressure, rho};
+}
+SPH_HD float densityFromSums(float fluidKernelSum, float wallVolumeKernelSum,
+                             const FluidParameters& p) {
+  return p.mass * fluidKernelSum + p.restDensity * wallVolumeKernelSum;
 }
 
 // A kernel value where the pair is near, zero elsewhere: a term of the density's sums.

@@ -27,6 +27,10 @@ struct FluidParameters {
   float surfaceTension;    // σ, N/m
   float surfaceThreshold;  // |∇c| above which a particle is on the surface, 1/m
   Vec3 gravity;            // m/s²
+  // Density integrated by the continuity equation (weakly compressible solver), with δ-SPH's
+  // diffusion of coefficient densityDiffusion (δ); else summed from the neighbours each step.
+  bool continuityDensity;
+  float densityDiffusion;
 };
 
 // How the CPU's passes take neighbours: a SIMD batch at a time, or one at a time as the GPU

@@ -27,7 +27,9 @@ struct FluidParticles {
   Buffer<Vec4> position;     // xyz, w unused
   Buffer<Vec4> velocity;     // xyz; w = 1 if the clamp policy put the particle back this step
   Buffer<std::uint32_t> id;  // stable particle id
-  // computed by computeDensityAndPressure (n)
+  // computed by computeDensityAndPressure (n); with continuity density (densityIsState), kept
+  // across steps, reordered by buildGrid, and advanced by integrateDensity
+  bool densityIsState = false;
   Buffer<float> density;
   Buffer<float> pressure;
   Buffer<Vec4> pressureState;  // what the force pass reads of a neighbour: p/ρ², 1/ρ, p, ρ
@@ -47,6 +49,7 @@ struct FluidParticles {
   Buffer<std::uint32_t> order;
   Buffer<Vec4> scratch4;
   Buffer<std::uint32_t> scratchId;
+  Buffer<float> scratchDensity;
   // The CPU's SIMD passes: positions as three arrays, padded so that a batch load anywhere in
   // range stays inside (n + kBatchPadding). Empty on the GPU.
   Buffer<float> batchX, batchY, batchZ;

@@ -7,6 +7,7 @@
 #include "fluid/dfsph_solve.hpp"
 #include "fluid/forces.hpp"
 #include "fluid/integrate.hpp"
+#include "fluid/integrate_density.hpp"
 #include "fluid/measure_step.hpp"
 #include "fluid/prepare_boundary.hpp"
 #include "fluid/sample_points.hpp"

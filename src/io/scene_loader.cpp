@@ -22,6 +22,7 @@ namespace {
 using nlohmann::json;
 
 constexpr NumberRule kSupportRatio{1, 4, false, false};
+constexpr NumberRule kDiffusion{0, 1, false, false};  // δ; 0.1 is the usual
 
 DomainDesc readDomain(const ObjectReader& in) {
   DomainDesc domain;
@@ -64,6 +65,8 @@ FluidDesc readFluid(const ObjectReader& in) {
   fluid.eos = in.choice("eos", fluid.eos, kEosNames);
   fluid.clampNegativePressure = in.boolean("clamp_negative_pressure", fluid.clampNegativePressure);
   fluid.pressureForm = in.choice("pressure_form", fluid.pressureForm, kPressureFormNames);
+  fluid.density = in.choice("density", fluid.density, kDensityModelNames);
+  fluid.densityDiffusion = in.number("density_diffusion", fluid.densityDiffusion, kDiffusion);
   readViscosity(in.object("viscosity"), fluid);
   const ObjectReader tension = in.object("surface_tension");
   fluid.surfaceTension = tension.number("coefficient", fluid.surfaceTension, kNonNegative);
@@ -333,6 +336,21 @@ void checkProbes(const ReadContext& context, const Scene& scene) {
   }
 }
 
+// Continuity density is the weakly compressible solver's, in the symmetric pressure form.
+void checkDensityModel(const ReadContext& context, const Scene& scene) {
+  if (scene.fluid.density != DensityModel::Continuity) return;
+  if (scene.fluid.solver != FluidSolver::Wcsph)
+    context.fail("fluid.density",
+                 "expected \"summation\" with fluid.solver \"dfsph\" (\"continuity\" needs "
+                 "fluid.solver \"wcsph\"), got \"continuity\"",
+                 {"fluid.solver"});
+  if (scene.fluid.pressureForm != PressureForm::Symmetric)
+    context.fail("fluid.density",
+                 "expected \"summation\" with fluid.pressure_form \"paper\" (\"continuity\" "
+                 "needs \"symmetric\"), got \"continuity\"",
+                 {"fluid.pressure_form"});
+}
+
 // Boundary coupling gives the objects the incompressible solver's pressure: there is none
 // without it.
 void checkCoupling(const ReadContext& context, const Scene& scene) {
@@ -482,6 +500,7 @@ Scene parseScene(const json& document, const std::string& sourceName,
   checkObjectNames(context, scene);
   checkWallNames(context, scene);
   checkCoupling(context, scene);
+  checkDensityModel(context, scene);
   checkProbes(context, scene);
   checkFlow(context, scene);
   return scene;

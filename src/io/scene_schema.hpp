@@ -61,6 +61,8 @@ inline constexpr NamedValue<EquationOfState> kEosNames[] = {{"linear", EquationO
                                                             {"tait", EquationOfState::Tait}};
 inline constexpr NamedValue<PressureForm> kPressureFormNames[] = {
     {"paper", PressureForm::Paper}, {"symmetric", PressureForm::Symmetric}};
+inline constexpr NamedValue<DensityModel> kDensityModelNames[] = {
+    {"summation", DensityModel::Summation}, {"continuity", DensityModel::Continuity}};
 inline constexpr NamedValue<FluidSolver> kSolverNames[] = {{"wcsph", FluidSolver::Wcsph},
                                                            {"dfsph", FluidSolver::Dfsph}};
 inline constexpr NamedValue<ObjectCoupling> kCouplingNames[] = {

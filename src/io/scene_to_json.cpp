@@ -59,6 +59,8 @@ json fluidToJson(const FluidDesc& fluid) {
       {"eos", nameOf(fluid.eos, kEosNames)},
       {"clamp_negative_pressure", fluid.clampNegativePressure},
       {"pressure_form", nameOf(fluid.pressureForm, kPressureFormNames)},
+      {"density", nameOf(fluid.density, kDensityModelNames)},
+      {"density_diffusion", fluid.densityDiffusion},
       {"viscosity",
        {{"model", nameOf(fluid.viscosityModel, kViscosityNames)},
         {"value", fluid.viscosity},

@@ -250,6 +250,8 @@ fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& c)
   p.wallFriction = static_cast<float>(f.wallFriction);
   p.surfaceTension = static_cast<float>(f.surfaceTension);
   p.surfaceThreshold = static_cast<float>(c.surfaceThreshold);
+  p.continuityDensity = f.density == DensityModel::Continuity;
+  p.densityDiffusion = static_cast<float>(f.densityDiffusion);
   p.gravity = Vec3{static_cast<float>(scene.gravity[0]), static_cast<float>(scene.gravity[1]),
                    static_cast<float>(scene.gravity[2])};
   return p;

@@ -127,6 +127,18 @@ class EngineImpl final : public FluidEngine {
   }
   void computeForces() override { fluid::computeForces(fluid_, grid_, boundary_, params_, walk_); }
   void prepareSolver() override { fluid::prepareSolver(fluid_); }
+  void integrateDensity(float dt) override {
+    fluid::integrateDensity(fluid_, grid_, boundary_, params_, dt, walk_);
+  }
+  void keepDensity(const std::vector<float>& byId) override {
+    const std::size_t n = fluid_.count;
+    std::vector<std::uint32_t> id(n);
+    std::vector<float> density(n);
+    B::download(fluid_.id, id.data(), n);
+    for (std::size_t i = 0; i < n; ++i) density[i] = byId[id[i]];
+    B::upload(fluid_.density, density.data(), n);
+    fluid_.densityIsState = true;
+  }
   fluid::SolverReport solve(const fluid::SolverSettings& settings, fluid::SolverTarget target,
                             float dt) override {
     return fluid::solve(fluid_, grid_, boundary_, objectBoundary_, params_, settings, target, dt,
@@ -237,6 +249,7 @@ class EngineImpl final : public FluidEngine {
     for (auto* b : {&fluid_.scratch4, &fluid_.pressureState}) b->resize(n);
     for (auto* b : {&fluid_.cell, &fluid_.order, &fluid_.scratchId, &fluid_.neighborCount})
       b->resize(n);
+    fluid_.scratchDensity.resize(n);
     fluid_.neighbors.resize(n * fluid_.neighborStride);
   }
   // The arrays indexed by particle id, to hold ids below `ids`: new particles have no external

@@ -65,6 +65,13 @@ class FluidEngine {
   // The stages of a step, in order.
   virtual std::size_t buildGrid() = 0;  // returns the particles removed
   virtual void computeDensityAndPressure() = 0;
+  // From now on the density is state, integrated from its rate of change (continuity): the
+  // density pass keeps it, buildGrid reorders it. It starts from `byId`, the density the
+  // sampling meant (a kernel sum reads low at the free surface, and that deficit would stay).
+  virtual void keepDensity(const std::vector<float>& byId) = 0;
+  // With the density kept: after the density pass, ρ += dt Dρ/Dt over the last step's dt
+  // (fluid/integrate_density.hpp), and pressure from it.
+  virtual void integrateDensity(float dt) = 0;
   virtual void computeForces() = 0;
   virtual fluid::StepMeasures measureStep() = 0;
   // The incompressible solver (DFSPH): its records at this step's positions, after the density
@@ -129,6 +136,7 @@ struct EngineSetup {
   fluid::DomainParameters domain;
   std::vector<Vec3> positions;   // fluid, by id
   std::vector<Vec3> velocities;  // fluid, by id
+  std::vector<float> densities;  // fluid, by id: at rest as sampled (sampling.hpp)
   std::vector<Vec3> walls;       // wall particles; their ids follow the fluid's
   std::uint32_t neighborStride = 0;
   fluid::NeighborWalk walk = fluid::NeighborWalk::Batched;

@@ -67,6 +67,25 @@ void compressHydrostatically(std::vector<Vec3>& points, const AxisBox& block, co
   }
 }
 
+std::vector<float> restingDensities(const std::vector<Vec3>& points, const AxisBox& block,
+                                    bool hydrostatic, const Vec3d& gravity, double soundSpeed,
+                                    double restDensity) {
+  std::vector<float> out(points.size(), float(restDensity));
+  const int up = upAxisOf(gravity);
+  const double g = std::abs(gravity[up]);
+  if (!hydrostatic || g == 0.0 || soundSpeed <= 0.0) return out;
+  const bool upIsPositive = gravity[up] <= 0.0;
+  const double top = upIsPositive ? block.max[up] : block.min[up];
+  const double c2 = soundSpeed * soundSpeed;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3& p = points[i];
+    const double compressed = std::abs(top - double(up == 0 ? p.x : (up == 1 ? p.y : p.z)));
+    const double depth = c2 / g * std::expm1(g * compressed / c2);  // compressHydrostatically's z
+    out[i] = float(restDensity * (1.0 + g * depth / c2));
+  }
+  return out;
+}
+
 int upAxisOf(const Vec3d& gravity) {
   int axis = 1;
   double largest = 0.0;

@@ -24,6 +24,14 @@ std::vector<Vec3> sampleTank(const AxisBox& inner, int layers, bool closed, doub
 void compressHydrostatically(std::vector<Vec3>& points, const AxisBox& block, const Vec3d& gravity,
                              double soundSpeed);
 
+// The density each point of a block stands for, at rest: ρ0 (1 + g z / c0²) at depth z (of the
+// uncompressed lattice) for a hydrostatic block, whose points compressHydrostatically has
+// moved; ρ0 for any other. What continuity density starts from, where a kernel sum would read
+// low at the free surface.
+std::vector<float> restingDensities(const std::vector<Vec3>& points, const AxisBox& block,
+                                    bool hydrostatic, const Vec3d& gravity, double soundSpeed,
+                                    double restDensity);
+
 // The axis gravity acts along (y when there is none).
 int upAxisOf(const Vec3d& gravity);
 

@@ -23,7 +23,10 @@ void Simulation::step(double until) {
   s.surfaceMeasured = false;
   profile.interaction = timedMs([&] { s.receiveBoundaryObjects(); });
   profile.buildGrid = timedMs([&] { s.removed += engine.buildGrid(); });
-  profile.densityPressure = timedMs([&] { engine.computeDensityAndPressure(); });
+  profile.densityPressure = timedMs([&] {
+    engine.computeDensityAndPressure();
+    s.advanceDensity();
+  });
   s.neighboursListed = true;
   profile.divergenceSolve = timedMs([&] { s.solveDivergence(); });
   profile.forces = timedMs([&] { engine.computeForces(); });
@@ -35,6 +38,7 @@ void Simulation::step(double until) {
   profile.integrate = timedMs([&] {
     s.driveInflow();
     s.clamped += engine.integrate(float(s.dt));
+    s.movedFor = s.dt;
   });
   profile.objects = timedMs([&] { s.advanceObjects(); });
   s.time = (s.dt == until - s.time) ? until : s.time + s.dt;

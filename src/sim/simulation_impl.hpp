@@ -71,6 +71,12 @@ struct Simulation::Impl {
   std::vector<Vec3> fluidForceOnWall;       // by wall, last step; only when a probe asks
   std::vector<std::size_t> wallOfParticle;  // in the engine's wall order
   std::unique_ptr<sim::ProbeSampler> probes;
+  // Continuity density: advanced at the next density pass over the step that moved the
+  // particles (none before the first).
+  double movedFor = 0.0;
+  void advanceDensity() {
+    if (params.continuityDensity) engine->integrateDensity(float(movedFor));
+  }
   // Flow in: the emitters, and the id the next particle they put gets (after the objects').
   sim::Emitters emitters;
   fluid::InflowZones inflowZones;
@@ -125,6 +131,7 @@ struct Simulation::Impl {
     // Density and pressure of the initial state, so stats and frame 0 are meaningful.
     removed += engine->buildGrid();
     engine->computeDensityAndPressure();
+    if (params.continuityDensity) engine->keepDensity(setup.densities);
     probes = std::make_unique<sim::ProbeSampler>(scene, scene.fluid.spacing);
     sampleProbes();
   }
@@ -289,6 +296,10 @@ struct Simulation::Impl {
       }
       if (block.hydrostatic)
         sim::compressHydrostatically(points, block.box, scene.gravity, calibration.soundSpeed);
+      const std::vector<float> rho =
+          sim::restingDensities(points, block.box, block.hydrostatic, scene.gravity,
+                                calibration.soundSpeed, scene.fluid.restDensity);
+      setup.densities.insert(setup.densities.end(), rho.begin(), rho.end());
       const Vec3 v{float(block.velocity[0]), float(block.velocity[1]), float(block.velocity[2])};
       const Vec3 w{float(block.angularVelocity[0]), float(block.angularVelocity[1]),
                    float(block.angularVelocity[2])};

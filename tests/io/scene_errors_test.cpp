@@ -285,6 +285,23 @@ TEST(SceneErrors, BadProbesNameTheKey) {
             "scenes/x.json: output.probe_rate: expected a number in (0, 10000000], got 0");
 }
 
+TEST(SceneErrors, ContinuityDensityNeedsTheWeaklyCompressibleSymmetricSolver) {
+  json dfsph = with(completeSceneJson(), "/fluid/density", "continuity");
+  dfsph["fluid"]["solver"] = "dfsph";
+  EXPECT_EQ(parseError(dfsph),
+            "scenes/x.json: fluid.density: expected \"summation\" with fluid.solver \"dfsph\" "
+            "(\"continuity\" needs fluid.solver \"wcsph\"), got \"continuity\"");
+  json paper = with(completeSceneJson(), "/fluid/density", "continuity");
+  paper["fluid"]["solver"] = "wcsph";
+  paper["interaction"]["coupling"] = "contact";
+  paper["fluid"]["pressure_form"] = "paper";
+  EXPECT_EQ(parseError(paper),
+            "scenes/x.json: fluid.density: expected \"summation\" with fluid.pressure_form "
+            "\"paper\" (\"continuity\" needs \"symmetric\"), got \"continuity\"");
+  EXPECT_EQ(parseError(with(completeSceneJson(), "/fluid/density_diffusion", 2)),
+            "scenes/x.json: fluid.density_diffusion: expected a number in [0, 1], got 2");
+}
+
 TEST(SceneErrors, BadEmittersAndOutletsNameTheKey) {
   EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/0/shape", "square")),
             "scenes/x.json: emitters[0].shape: expected one of \"disc\", \"rectangle\", got "

@@ -60,6 +60,17 @@ TEST(BatchedPasses, MatchTheOneAtATimePassesForEveryOption) {
       }
 }
 
+// Continuity density with δ-SPH: its pass, batched and one at a time, through lists and cells.
+TEST(BatchedPasses, ContinuityDensityMatchesTheOneAtATimePass) {
+  Scene scene = testing::restingTank(0.01, 0.1, 0.1);
+  scene.fluid.blocks[0].box.max[1] = 0.06;
+  scene.fluid.blocks[0].velocity = {0.3, -0.5, 0.2};
+  scene.fluid.kernel = KernelKind::CubicSpline;
+  scene.fluid.density = DensityModel::Continuity;
+  expectSameState(scene, passes(CpuPasses::OneAtATime), passes(CpuPasses::Batched), "lists");
+  expectSameState(scene, passes(CpuPasses::OneAtATime, 8), passes(CpuPasses::Batched, 8), "cells");
+}
+
 // A particle with more neighbours than its list holds finds them in the grid's cells: with
 // lists of 24 most particles of a splashing tank take that path and some do not. Both walks
 // must still give what lists long enough give.

@@ -19,17 +19,11 @@
 //   β_i = 1 / ((G + G_w)·G + Σ_fluid |V_j ∇W_ij|²)
 #pragma once
 
+#include "sph/core/continuity.hpp"
 #include "sph/core/select.hpp"
 #include "sph/core/vec.hpp"
 
 namespace sph {
-
-// One neighbour's share of the density's rate of change at particle i,
-// Dρ_i/Dt = Σ_j m_j (v_i - v_j)·∇W_ij; a wall particle has v = 0 and m = ρ0 ψ_b.
-template <class S, class V>
-SPH_HD S densityRateTerm(S massJ, V vij, V gradW) {
-  return massJ * dot(vij, gradW);
-}
 
 // β_i from G = Σ_j V_j ∇W_ij (walls included), G_w (walls alone) and Σ_fluid |V_j ∇W_ij|². A
 // particle with almost no neighbours (the sum below `smallest`) has no density to correct: 0.

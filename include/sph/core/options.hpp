@@ -11,4 +11,8 @@ enum class ViscosityModel { Muller, Artificial };
 // for it).
 enum class FluidSolver { Wcsph, Dfsph };
 
+// The weakly compressible solver's density: summed from the neighbours each step (Meteer 2011,
+// eq. 4), or integrated by the continuity equation with δ-SPH's density diffusion.
+enum class DensityModel { Summation, Continuity };
+
 }  // namespace sph
