@@ -58,8 +58,10 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
           wallSum += xk.w * kernels.W(lengthSquared(xi - xyz(xk)));
         });
         // Continuity keeps the density integrate gave; the sums still list the neighbours.
-        const PressureState s =
-            pressureStateFromDensity(integrated ? density[i] : densityFromSums(sum, wallSum, p), p);
+        const PressureState s = pressureStateFromDensity(
+            integrated ? keptDensity(density[i], densityFromSums(sum, wallSum, p), p)
+                       : densityFromSums(sum, wallSum, p),
+            p);
         density[i] = s.density;
         pressure[i] = s.pressure;
         state[i] = packed(s);

@@ -113,7 +113,10 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
           wallSum += loadBatch(ov, b) * kernelWhere(kernels, r2, candidates && r2 < h2);
         });
     const PressureState s = pressureStateFromDensity(
-        integrated ? density[i] : densityFromSums(sumLanes(sum), sumLanes(wallSum), p), p);
+        integrated
+            ? keptDensity(density[i], densityFromSums(sumLanes(sum), sumLanes(wallSum), p), p)
+            : densityFromSums(sumLanes(sum), sumLanes(wallSum), p),
+        p);
     density[i] = s.density;
     pressure[i] = s.pressure;
     state[i] = packed(s);

@@ -56,6 +56,17 @@ SPH_HD PressureState pressureStateFromDensity(float rho, const FluidParameters& 
       pressureFromDensity(p.eos, rho, p.restDensity, p.stiffness, p.clampNegativePressure);
   return PressureState{pressureOverDensitySquared(pressure, rho), 1.0f / rho, pressure, rho};
 }
+// Continuity density's floor: the density it integrated, but never more than 1 % of ρ0 below
+// what the kernel sums give. In the bulk the two agree (at rest within 0.01 %), and where the
+// sums read low (the free surface) the integrated density stands; but a particle driven into
+// a wall's particles has its sums rise at once, so the wall pushes it back. Integrated alone,
+// a particle splashing against a closed tank's lid passed through it, its density falling
+// below zero on the far side.
+constexpr float kSummedDensityMargin = 0.01f;
+SPH_HD float keptDensity(float integrated, float summed, const FluidParameters& p) {
+  const float floor = summed - kSummedDensityMargin * p.restDensity;
+  return integrated > floor ? integrated : floor;
+}
 SPH_HD float densityFromSums(float fluidKernelSum, float wallVolumeKernelSum,
                              const FluidParameters& p) {
   return p.mass * fluidKernelSum + p.restDensity * wallVolumeKernelSum;
