@@ -99,7 +99,9 @@ TEST(DeltaSph, DamBreakHasNoCornerJetsAndLosesNothing) {
   }
   std::printf("  fastest before the surge reached the far wall: %.3f m/s (limit %.3f)\n", fastest,
               limit);
-  if (!testing::kSanitized) EXPECT_TRUE(arrived);
+  if (!testing::kSanitized) {
+    EXPECT_TRUE(arrived);
+  }
 }
 
 ParticleFrame runFor(const Scene& scene, int threads, int steps) {

@@ -162,7 +162,10 @@ TEST(PipeFlow, CarriesTheFlowFromTheEmitterToTheOutletWithoutLosingAParticle) {
         << "every particle is in the pipe or drained, at t = " << sim.time() << " s";
   }
   EXPECT_GT(sim.emittedCount(), 0u);
-  EXPECT_GT(sim.outletStats().at(0).particles, 0u);
+  // The first particles reach the outlet after 0.02 s, the sanitizers' whole run.
+  if (!testing::kSanitized) {
+    EXPECT_GT(sim.outletStats().at(0).particles, 0u);
+  }
 }
 
 // Hagen-Poiseuille flow (scenes/poiseuille_pipe.json): a viscous liquid pumped through a pipe
