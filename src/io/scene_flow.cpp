@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "io/scene_geometry_checks.hpp"
+#include "io/scene_checks.hpp"
 
 namespace sph::io {
 namespace {
@@ -45,22 +45,6 @@ EmitterDesc readEmitter(const ObjectReader& in, std::size_t index) {
   e.start = in.number("start", e.start, kNonNegative);
   e.end = in.number("end", e.end, kPositive);
   return e;
-}
-
-template <class Desc>
-void checkNames(const ReadContext& context, const std::vector<Desc>& items, const char* list,
-                const char* what) {
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    const std::string& name = items[i].name;
-    const std::string key = joinIndex(list, i) + ".name";
-    if (name.empty() || name.find_first_of(",\"\n") != std::string::npos)
-      context.fail(key, "expected a name without commas or quotes, got \"" + name + "\"");
-    for (std::size_t j = 0; j < i; ++j) {
-      if (items[j].name == name)
-        context.fail(key, std::string("expected a name no other ") + what + " has, got \"" + name +
-                              "\" (also " + joinIndex(list, j) + ")");
-    }
-  }
 }
 
 void checkEmitter(const ReadContext& context, const EmitterDesc& e, const std::string& path,

@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "io/json_input.hpp"
+#include "io/scene_checks.hpp"
 #include "io/scene_flow.hpp"
-#include "io/scene_geometry_checks.hpp"
 #include "io/scene_overrides.hpp"
 #include "io/scene_reader.hpp"
 #include "io/scene_schema.hpp"
@@ -286,17 +286,10 @@ void checkObjectNames(const ReadContext& context, const Scene& scene) {
 // Probes have names of their own (they head probes.csv's columns), read inside the domain, and
 // a force probe names an object.
 void checkProbes(const ReadContext& context, const Scene& scene) {
+  checkNames(context, scene.probes, "probes", "probe");
   for (std::size_t i = 0; i < scene.probes.size(); ++i) {
     const ProbeDesc& p = scene.probes[i];
     const std::string path = joinIndex("probes", i);
-    if (p.name.empty() || p.name.find_first_of(",\"\n") != std::string::npos)
-      context.fail(path + ".name",
-                   "expected a name without commas or quotes, got \"" + p.name + "\"");
-    for (std::size_t j = 0; j < i; ++j) {
-      if (scene.probes[j].name == p.name)
-        context.fail(path + ".name", "expected a name no other probe has, got \"" + p.name +
-                                         "\" (also probes[" + std::to_string(j) + "])");
-    }
     if (p.kind == ProbeKind::Point)
       checkPointInDomain(context, p.position, path + ".position", scene.domain.box);
     if (p.kind == ProbeKind::Level) {

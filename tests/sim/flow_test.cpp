@@ -127,7 +127,6 @@ TEST_P(Outlets, RemoveAndCountWhatEntersThem) {
   EXPECT_GT(midway[0].particles, 0u);
   EXPECT_LT(midway[0].particles, initial);
   EXPECT_EQ(midway[0].particles + sim.fluidCount(), initial);
-  EXPECT_NEAR(midway[0].mass, double(midway[0].particles) * sim.calibration().mass, 1e-12);
   sim.advanceTo(0.25);  // every particle through, and the run goes on empty
   const std::vector<FlowStats> after = sim.outletStats();
   EXPECT_EQ(after[0].particles, initial);

@@ -1,4 +1,4 @@
-#include "io/scene_geometry_checks.hpp"
+#include "io/scene_checks.hpp"
 
 #include <cmath>
 #include <utility>

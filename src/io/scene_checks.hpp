@@ -1,8 +1,9 @@
-// Checks of a scene's geometry shared by its readers: boxes in order, points and boxes inside
-// the domain, lengths a spacing or more. Each failure throws InputError naming the key.
+// Checks shared by the scene's readers: names plain and unique, boxes in order, points and boxes
+// inside the domain, lengths a spacing or more. Each failure throws InputError naming the key.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "io/scene_reader.hpp"
 #include "sph/scene.hpp"
@@ -10,6 +11,24 @@
 namespace sph::io {
 
 AxisBox readBox(const ObjectReader& in);  // "min" and "max", both required
+
+// The names of `items` (the scene's array `list` of `what`s): no commas or quotes (they head
+// columns and keys of the outputs), none twice.
+template <class Desc>
+void checkNames(const ReadContext& context, const std::vector<Desc>& items, const char* list,
+                const char* what) {
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string& name = items[i].name;
+    const std::string key = joinIndex(list, i) + ".name";
+    if (name.empty() || name.find_first_of(",\"\n") != std::string::npos)
+      context.fail(key, "expected a name without commas or quotes, got \"" + name + "\"");
+    for (std::size_t j = 0; j < i; ++j) {
+      if (items[j].name == name)
+        context.fail(key, std::string("expected a name no other ") + what + " has, got \"" + name +
+                              "\" (also " + joinIndex(list, j) + ")");
+    }
+  }
+}
 
 double lengthOf(const Vec3d& v);
 Vec3d cross(const Vec3d& a, const Vec3d& b);
