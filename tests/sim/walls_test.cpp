@@ -2,6 +2,7 @@
 // cover it without holes, the fluid starts clear of them, bad meshes are refused naming the
 // key, and each shape holds water at rest at ρ g h for 2 s without losing a particle.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,8 +48,11 @@ Scene emptyScene() {
   return s;
 }
 
+// ctest runs each test in its own process, several at once: the process id keeps one test from
+// truncating a file that another is reading.
 std::filesystem::path writeFile(const std::string& name, const std::string& text) {
-  const std::filesystem::path file = std::filesystem::temp_directory_path() / name;
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / (std::to_string(::getpid()) + "_" + name);
   std::ofstream(file) << text;
   return file;
 }
