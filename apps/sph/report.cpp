@@ -165,6 +165,7 @@ nlohmann::json objectsJson(const std::vector<ObjectStats>& objects) {
                    {"centre_of_mass", o.centreOfMass},
                    {"velocity", o.velocity},
                    {"fluid_force", o.fluidForce},
+                   {"contact_force", o.contactForce},
                    {"broken_springs", o.brokenSprings}});
   }
   return out;

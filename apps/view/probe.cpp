@@ -46,4 +46,22 @@ std::optional<render::Vec3f> dragTarget(const render::OrbitCamera& camera, const
   return render::add(ray.origin, render::scale(ray.direction, t));
 }
 
+std::optional<Pick> pickObject(const Ray& ray, const std::vector<float>& position,
+                               const std::vector<std::int32_t>& object,
+                               const std::vector<bool>& grabbable, float reach) {
+  std::optional<Pick> best;
+  for (std::size_t i = 0; i < object.size(); ++i) {
+    const std::int32_t o = object[i];
+    if (o < 0 || std::size_t(o) >= grabbable.size() || !grabbable[std::size_t(o)]) continue;
+    const Vec3f p{position[3 * i], position[3 * i + 1], position[3 * i + 2]};
+    const Vec3f fromEye = render::subtract(p, ray.origin);
+    const float along = render::dot(fromEye, ray.direction);
+    if (!(along > 0.0f)) continue;  // behind the eye
+    const Vec3f across = render::subtract(fromEye, render::scale(ray.direction, along));
+    if (render::dot(across, across) > reach * reach) continue;
+    if (!best || along < best->distance) best = Pick{std::size_t(o), along};
+  }
+  return best;
+}
+
 }  // namespace sph::view

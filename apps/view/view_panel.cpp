@@ -147,6 +147,20 @@ void probes(const ProbeReadings& readings) {
   }
 }
 
+// The fluid's and the other objects' push on the object last grabbed, over recent frames.
+void watchedForce(const ViewerState& state) {
+  const std::vector<float>& h = state.watchedForce;
+  char value[32] = "-";
+  if (!h.empty()) std::snprintf(value, sizeof value, "%.4g N", double(h.back()));
+  const std::string label = "on " + state.watchedName;
+  if (h.empty()) {
+    ImGui::Text("%s  %s", label.c_str(), value);
+    return;
+  }
+  ImGui::PlotLines(label.c_str(), h.data(), int(h.size()), 0, value, 0.0f, FLT_MAX,
+                   ImVec2(0.0f, 48.0f));
+}
+
 }  // namespace
 
 void smooth(StepProfile& into, const StepProfile& latest, double w) {
@@ -172,8 +186,13 @@ void drawPanel(Simulation& sim, ViewerState& state, const render::ValueRange& co
   if (!state.probes.columns().empty() &&
       ImGui::CollapsingHeader("probes", ImGuiTreeNodeFlags_DefaultOpen))
     probes(state.probes);
+  if (state.watching && ImGui::CollapsingHeader("force", ImGuiTreeNodeFlags_DefaultOpen))
+    watchedForce(state);
   ImGui::TextDisabled("left drag: turn   right drag: pan   wheel: zoom");
-  if (state.probe) ImGui::TextDisabled("ctrl + left drag: move the probe sphere");
+  if (state.grabbable)
+    ImGui::TextDisabled(state.probe
+                            ? "ctrl + left drag: move the probe sphere or a kinematic object"
+                            : "ctrl + left drag: move a kinematic object");
   if (!state.message.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
     ImGui::TextWrapped("%s", state.message.c_str());

@@ -9,12 +9,15 @@
 #include <imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "camera.hpp"
 #include "colour_map.hpp"
@@ -110,33 +113,69 @@ void handleKeys(ViewerState& state) {
     d.colour = render::ColourMode((int(d.colour) + 1) % 5);
 }
 
-struct Probe {
-  bool present = false;
-  Vec3d start{0, 0, 0};  // its centre in the scene
-  std::size_t object = 0;
+// A kinematic object held by ctrl + left drag: the point of it the cursor took hold of moves
+// in the plane that faces the camera through that point.
+struct Grab {
+  bool held = false;
+  std::string name;
+  Vec3d startCentre{0, 0, 0};     // steerObject's offsets are from here
+  render::Vec3f handle{0, 0, 0};  // the point held, from the object's centre
 };
 
-// Left drag turns the camera, right drag pans, the wheel zooms; with ctrl, left drag moves the
-// probe in the plane that faces the camera through its centre.
-void handleMouse(render::OrbitCamera& camera, Simulation& sim, const Probe& probe, int width,
-                 int height, ViewerState& state) {
+render::Vec3f toVec3f(const std::array<double, 3>& v) {
+  return {float(v[0]), float(v[1]), float(v[2])};
+}
+
+// Starts holding the kinematic object under the cursor, if there is one.
+void grab(Simulation& sim, const Ray& ray, Grab& held, ViewerState& state) {
+  const Scene& scene = sim.scene();
+  std::vector<bool> kinematic(scene.objects.size());
+  for (std::size_t o = 0; o < kinematic.size(); ++o)
+    kinematic[o] = scene.objects[o].motion == ObjectMotion::Kinematic;
+  const ParticleFrame solids = sim.solidFrame(false);
+  // Within a particle's diameter of the ray: the object's own spacing, or the fluid's.
+  const float reach = float(scene.fluid.spacing);
+  const std::optional<Pick> pick =
+      pickObject(ray, solids.position, solids.object, kinematic, reach);
+  if (!pick) return;
+  const ObjectStats stats = sim.objectStats()[pick->object];
+  const render::Vec3f point = render::add(ray.origin, render::scale(ray.direction, pick->distance));
+  held = {true, stats.name, stats.startCentre,
+          render::subtract(point, toVec3f(stats.centreOfMass))};
+  if (!state.watching || state.watched != pick->object) state.watchedForce.clear();
+  state.watching = true;
+  state.watched = pick->object;
+  state.watchedName = stats.name;
+}
+
+void steer(Simulation& sim, const render::OrbitCamera& camera, const Ray& ray, const Grab& held,
+           ViewerState& state) {
+  const render::Vec3f centre = toVec3f(sim.objectStats()[state.watched].centreOfMass);
+  const auto target = dragTarget(camera, ray, render::add(centre, held.handle));
+  if (!target) return;
+  const render::Vec3f to = render::subtract(*target, held.handle);
+  try {
+    sim.steerObject(
+        held.name,
+        {to[0] - held.startCentre[0], to[1] - held.startCentre[1], to[2] - held.startCentre[2]},
+        1.0 / 30.0);
+  } catch (const InputError& e) {
+    state.message = e.what();
+  }
+}
+
+// Left drag turns the camera, right drag pans, the wheel zooms; ctrl + left drag holds the
+// kinematic object under the cursor (the probe sphere, a clamp) and moves it.
+void handleMouse(render::OrbitCamera& camera, Simulation& sim, Grab& held, int width, int height,
+                 ViewerState& state) {
   const ImGuiIO& io = ImGui::GetIO();
+  if (!io.MouseDown[0]) held.held = false;
   if (io.WantCaptureMouse) return;
   if (io.MouseWheel != 0.0f) camera.distance *= std::pow(0.9f, io.MouseWheel);
-  if (io.MouseDown[0] && io.KeyCtrl && probe.present) {
-    const std::array<double, 3> c = sim.objectStats()[probe.object].centreOfMass;
-    const render::Vec3f centre{float(c[0]), float(c[1]), float(c[2])};
+  if (io.MouseDown[0] && (io.KeyCtrl || held.held)) {
     const Ray ray = rayThroughPixel(camera, io.MousePos.x, io.MousePos.y, width, height);
-    if (const auto target = dragTarget(camera, ray, centre)) {
-      try {
-        sim.steerObject(kProbeName,
-                        {(*target)[0] - probe.start[0], (*target)[1] - probe.start[1],
-                         (*target)[2] - probe.start[2]},
-                        1.0 / 30.0);
-      } catch (const InputError& e) {
-        state.message = e.what();
-      }
-    }
+    if (io.MouseClicked[0]) grab(sim, ray, held, state);
+    if (held.held) steer(sim, camera, ray, held, state);
     return;
   }
   if (io.MouseDown[0]) {
@@ -153,6 +192,19 @@ void handleMouse(render::OrbitCamera& camera, Simulation& sim, const Probe& prob
     for (int a = 0; a < 3; ++a)
       camera.target[a] += scale * (-io.MouseDelta.x * right[a] + io.MouseDelta.y * up[a]);
   }
+}
+
+// The force on the watched object, fluid's and contacts' together, kept for the panel's plot.
+void watchForce(const Simulation& sim, ViewerState& state) {
+  if (!state.watching) return;
+  const ObjectStats o = sim.objectStats()[state.watched];
+  double squared = 0.0;
+  for (int a = 0; a < 3; ++a) squared += std::pow(o.fluidForce[a] + o.contactForce[a], 2);
+  state.watchedForce.push_back(float(std::sqrt(squared)));
+  constexpr std::size_t kKept = 300;
+  if (state.watchedForce.size() > kKept)
+    state.watchedForce.erase(state.watchedForce.begin(),
+                             state.watchedForce.end() - std::ptrdiff_t(kKept));
 }
 
 // Steps toward real time, within a budget of wall time per display frame so the window stays
@@ -179,6 +231,7 @@ void advance(Simulation& sim, ViewerState& state, double wallSeconds) {
     state.message = std::string(failure.what()) + " (r resets)";
   }
   state.probes.add(sim.takeProbeRows());
+  watchForce(sim, state);
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   if (wall > 0.0) {
     const double factor = (sim.time() - before) / std::max(wall, wallSeconds);
@@ -194,12 +247,8 @@ void runViewer(const Scene& original, const ViewOptions& options) {
     throw InputError("--colour: expected kind, density, pressure, speed or surface, got '" +
                      options.colour + "'");
   Scene scene = original;
-  Probe probe;
-  if (options.probe) {
-    probe.present = true;
-    probe.start = addProbe(scene);
-    probe.object = scene.objects.size() - 1;
-  }
+  if (options.probe) addProbe(scene);
+  Grab held;
   auto sim = std::make_unique<Simulation>(scene, options.simulation);
 
   GlfwSession glfw;
@@ -213,7 +262,16 @@ void runViewer(const Scene& original, const ViewOptions& options) {
   state.fluidPath = feed.path();
   state.probes.reset(sim->probeColumns());
   state.draw.colour = *mode;
-  state.probe = probe.present;
+  state.probe = options.probe;
+  // The scene's own first kinematic object (the artery's clamp) is watched from the start.
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    if (scene.objects[o].motion != ObjectMotion::Kinematic) continue;
+    state.grabbable = true;
+    if (state.watching || (options.probe && o + 1 == scene.objects.size())) continue;
+    state.watching = true;
+    state.watched = o;
+    state.watchedName = scene.objects[o].name;
+  }
   state.draw.show.boundary = false;  // walls hide the fluid; b shows them
   state.draw.particleRadius = float(0.5 * scene.fluid.spacing);
   state.draw.domain = boxOf(scene.domain.box);
@@ -233,6 +291,8 @@ void runViewer(const Scene& original, const ViewOptions& options) {
     if (state.resetRequested) {
       sim = std::make_unique<Simulation>(scene, options.simulation);
       state.probes.reset(sim->probeColumns());
+      state.watchedForce.clear();
+      held.held = false;
       state.resetRequested = false;
       state.message.clear();
     }
@@ -244,7 +304,7 @@ void runViewer(const Scene& original, const ViewOptions& options) {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     handleKeys(state);
-    handleMouse(camera, *sim, probe, width, height, state);
+    handleMouse(camera, *sim, held, width, height, state);
     if (width > 0 && height > 0) {
       feed.feed(*sim, state.draw);
       renderer.draw(camera, state.draw, width, height);

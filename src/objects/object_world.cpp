@@ -104,6 +104,8 @@ struct ObjectWorld::Impl {
   std::vector<DVec3> position, velocity;
   std::vector<DVec3> initialPosition, restNormal;  // the pose as sampled
   std::vector<DVec3> force;                        // scratch, N
+  std::vector<DVec3> contactImpulse;               // by object, over the step so far, N s
+  std::vector<DVec3> contactForce;                 // by object, the last step's mean, N
   std::vector<std::uint8_t> movable;               // 0: kinematic or pinned
   ParticleState published;
 
@@ -132,6 +134,7 @@ struct ObjectWorld::Impl {
   void makeDeformable(const ObjectDesc& desc, Object& object, const std::string& where);
   void placeKinematic(const Object& object);
   void substep(double h, const std::vector<Vec3>& externalForce);
+  void addContactImpulses(double h);
   void integrateDeformable(const SpringNetwork& net, double h);
   void integrateRigid(const Object& object, RigidBody& body, double h);
   void publish();
@@ -340,8 +343,7 @@ void ObjectWorld::Impl::integrateRigid(const Object& object, RigidBody& body, do
 
 void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce) {
   const std::size_t n = position.size();
-  for (std::size_t i = 0; i < n; ++i)
-    force[i] = externalForce.empty() ? DVec3{} : toD(externalForce[i]);
+  std::fill(force.begin(), force.end(), DVec3{});
   if (contactsPossible) {
     const ContactParticles particles{position,
                                      velocity,
@@ -354,7 +356,10 @@ void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce
     if (!statics.empty())
       addStaticContactForces(settings.contact, particles, statics, settings.staticRadius,
                              staticGrid, force);
+    addContactImpulses(h);
   }
+  if (!externalForce.empty())
+    for (std::size_t i = 0; i < n; ++i) force[i] += toD(externalForce[i]);
   for (std::size_t b = 0; b < networks.size(); ++b)
     if (models[b] == DeformableModel::Springs)
       addSpringForces(networks[b], position, velocity, force);
@@ -372,6 +377,16 @@ void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce
   for (const Object& object : objects) {
     if (object.motion == ObjectMotion::Rigid) integrateRigid(object, rigid[object.body], h);
     if (object.motion == ObjectMotion::Kinematic) placeKinematic(object);
+  }
+}
+
+// While `force` holds the contacts alone.
+void ObjectWorld::Impl::addContactImpulses(double h) {
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    DVec3 sum{};
+    for (std::size_t i = objects[o].first; i < objects[o].first + objects[o].count; ++i)
+      sum += force[i];
+    contactImpulse[o] += sum * h;
   }
 }
 
@@ -428,6 +443,8 @@ ObjectWorld::ObjectWorld(const std::vector<ObjectDesc>& objects, const WorldSett
   for (std::size_t i = 0; i < objects.size(); ++i) w.addObject(objects[i], i);
   const std::size_t n = w.position.size();
   w.force.assign(n, DVec3{});
+  w.contactImpulse.assign(objects.size(), DVec3{});
+  w.contactForce.assign(objects.size(), DVec3{});
   w.published.position.resize(n);
   w.published.velocity.resize(n);
   w.published.normal.resize(n);
@@ -456,6 +473,10 @@ double ObjectWorld::time() const {
   return impl_->time;
 }
 
+Vec3 ObjectWorld::contactForce(std::size_t object) const {
+  return toF(impl_->contactForce.at(object));
+}
+
 ObjectInfo ObjectWorld::info(std::size_t object) const {
   const Impl& w = *impl_;
   const Impl::Object& o = w.objects.at(object);
@@ -472,6 +493,8 @@ ObjectInfo ObjectWorld::info(std::size_t object) const {
     momentum += w.velocity[i] * m;
   }
   info.centreOfMass = toF(moment / info.mass);
+  info.contactForce = toF(w.contactForce[object]);
+  info.startCentre = toF(o.initialCentre);
   info.velocity = toF(momentum / info.mass);
   if (o.motion == ObjectMotion::Rigid) {
     info.centreOfMass = toF(w.rigid[o.body].centreOfMass());
@@ -499,8 +522,10 @@ void ObjectWorld::step(double dt, const std::vector<Vec3>& externalForce) {
   count = std::max(count, double(w.xpbdSubsteps));
   const std::size_t substeps = std::size_t(std::max(count, 1.0));
   const double start = w.time, h = dt / double(substeps);
+  std::fill(w.contactImpulse.begin(), w.contactImpulse.end(), DVec3{});
   for (std::size_t s = 0; s < substeps; ++s) w.substep(h, externalForce);
   w.time = start + dt;  // no drift from summing h
+  for (std::size_t o = 0; o < w.objects.size(); ++o) w.contactForce[o] = w.contactImpulse[o] / dt;
   for (const Impl::Object& object : w.objects)
     if (object.motion == ObjectMotion::Kinematic) w.placeKinematic(object);
   w.publish();

@@ -59,6 +59,11 @@ struct ObjectInfo {
   Vec3 velocity{0, 0, 0};         // of the centre of mass, m/s
   std::size_t springs = 0;        // deformables (xpbd: distance constraints, not bending)
   std::size_t brokenSprings = 0;  // deformables, including those cut at the start
+  // The other objects' and the static particles' contact push on it, averaged over the last
+  // step (N): what a clamp squeezing a vessel feels. A kinematic object feels it too, though
+  // it does not move for it.
+  Vec3 contactForce{0, 0, 0};
+  Vec3 startCentre{0, 0, 0};  // the centre of mass as built: steer's offsets are from here
 };
 
 class ObjectWorld {
@@ -73,6 +78,8 @@ class ObjectWorld {
   std::size_t objectCount() const;
   const ParticleState& particles() const;
   ObjectInfo info(std::size_t object) const;
+  // ObjectInfo::contactForce alone, without summing the object's particles.
+  Vec3 contactForce(std::size_t object) const;
   double time() const;
 
   // Advances by dt. `externalForce` holds, per particle index, a force (N) acting throughout

@@ -46,6 +46,9 @@ ProbeSampler::ProbeSampler(const Scene& scene, double spacing) : rate_(scene.out
         for (std::size_t w = 0; w < scene.walls.size(); ++w)
           if (p.onWall && scene.walls[w].name == desc.wall) p.object = w;
         for (const char* column : {"_fx_N", "_fy_N", "_fz_N"}) columns_.push_back(name + column);
+        if (!p.onWall)
+          for (const char* column : {"_contact_fx_N", "_contact_fy_N", "_contact_fz_N"})
+            columns_.push_back(name + column);
         break;
     }
     probes_.push_back(p);
@@ -53,8 +56,7 @@ ProbeSampler::ProbeSampler(const Scene& scene, double spacing) : rate_(scene.out
 }
 
 std::vector<double> ProbeSampler::values(const std::vector<PointSums>& sums,
-                                         const std::vector<Vec3>& objectForce,
-                                         const std::vector<Vec3>& wallForce) const {
+                                         const Forces& forces) const {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> out;
   out.reserve(columns_.size());
@@ -74,9 +76,14 @@ std::vector<double> ProbeSampler::values(const std::vector<PointSums>& sums,
         out.push_back(levelAlong(filled.data(), int(p.pointCount), p.step));
         break;
       case ProbeKind::Force: {
-        const std::vector<Vec3>& forces = p.onWall ? wallForce : objectForce;
-        const Vec3 f = p.object < forces.size() ? forces[p.object] : Vec3{0, 0, 0};
+        const auto at = [&](const std::vector<Vec3>& by) {
+          return p.object < by.size() ? by[p.object] : Vec3{0, 0, 0};
+        };
+        const Vec3 f = at(p.onWall ? forces.fluidOnWall : forces.fluidOnObject);
         out.insert(out.end(), {double(f.x), double(f.y), double(f.z)});
+        if (p.onWall) break;
+        const Vec3 c = at(forces.contactOnObject);
+        out.insert(out.end(), {double(c.x), double(c.y), double(c.z)});
         break;
       }
     }
@@ -84,11 +91,9 @@ std::vector<double> ProbeSampler::values(const std::vector<PointSums>& sums,
   return out;
 }
 
-void ProbeSampler::record(double t, const std::vector<PointSums>& sums,
-                          const std::vector<Vec3>& objectForce,
-                          const std::vector<Vec3>& wallForce) {
+void ProbeSampler::record(double t, const std::vector<PointSums>& sums, const Forces& forces) {
   if (probes_.empty()) return;
-  const std::vector<double> now = values(sums, objectForce, wallForce);
+  const std::vector<double> now = values(sums, forces);
   for (;;) {
     const double sampleTime = double(nextSample_) / rate_;
     // A sample time that the state's time rounds onto counts as reached.

@@ -26,11 +26,15 @@ class ProbeSampler {
   // "<probe>_<quantity>_<unit>", in the order of each row's values.
   const std::vector<std::string>& columns() const { return columns_; }
 
-  // The state at time t: the fluid's sums at points() and the fluid's force on each object and
-  // each wall (empty when no probe reads a wall). Adds the rows due since the last state up to
-  // t.
-  void record(double t, const std::vector<PointSums>& sums, const std::vector<Vec3>& objectForce,
-              const std::vector<Vec3>& wallForce);
+  // The forces a force probe reads, by object and by wall.
+  struct Forces {
+    const std::vector<Vec3>& fluidOnObject;
+    const std::vector<Vec3>& contactOnObject;  // the other objects' and the walls'
+    const std::vector<Vec3>& fluidOnWall;      // empty when no probe reads a wall
+  };
+  // The state at time t: the fluid's sums at points() and the forces. Adds the rows due since
+  // the last state up to t.
+  void record(double t, const std::vector<PointSums>& sums, const Forces& forces);
   // The rows added since the last call.
   std::vector<ProbeRow> take();
 
@@ -43,9 +47,7 @@ class ProbeSampler {
     std::size_t object = 0;  // Force
     bool onWall = false;     // Force: `object` indexes the walls
   };
-  std::vector<double> values(const std::vector<PointSums>& sums,
-                             const std::vector<Vec3>& objectForce,
-                             const std::vector<Vec3>& wallForce) const;
+  std::vector<double> values(const std::vector<PointSums>& sums, const Forces& forces) const;
 
   std::vector<Probe> probes_;
   std::vector<Vec3> points_;

@@ -68,6 +68,7 @@ struct Simulation::Impl {
   std::uint64_t contactPairs = 0;
   sim::HostObjectForces objectForces;
   std::vector<Vec3> fluidForceOnObject;     // by object, last step
+  std::vector<Vec3> contactForceOnObject;   // by object, over the engine's last finished step
   std::vector<Vec3> fluidForceOnWall;       // by wall, last step; only when a probe asks
   std::vector<std::size_t> wallOfParticle;  // in the engine's wall order
   std::unique_ptr<sim::ProbeSampler> probes;
@@ -122,6 +123,7 @@ struct Simulation::Impl {
       calibration.objectParticles = world->particles().size();
       engine->setContainers(containers(*world, setup.positions));
       fluidForceOnObject.assign(world->objectCount(), Vec3{0, 0, 0});
+      contactForceOnObject.assign(world->objectCount(), Vec3{0, 0, 0});
       objects = std::make_unique<sim::ObjectRunner>(std::move(*world), scene.objectEngine.rate,
                                                     scene.objectEngine.ownThread);
     }
@@ -139,8 +141,8 @@ struct Simulation::Impl {
   // The probes read the state as it is now (sim/probes.hpp).
   void sampleProbes() {
     if (probes->empty()) return;
-    probes->record(time, engine->samplePoints(probes->points()), fluidForceOnObject,
-                   fluidForceOnWall);
+    probes->record(time, engine->samplePoints(probes->points()),
+                   {fluidForceOnObject, contactForceOnObject, fluidForceOnWall});
   }
 
   bool probesWallForces() const {
@@ -235,6 +237,10 @@ struct Simulation::Impl {
     objects->exchange().readIfNew(seenPublication, [&](const ObjectSurface& surface) {
       objectMaxSpeed = engine->setObjectSurface(surface, interactionParams);
     });
+    // Read here, where the engine is known to be idle: the probes sample after the fluid's
+    // step, while the engine may be running its own.
+    for (std::size_t o = 0; o < contactForceOnObject.size(); ++o)
+      contactForceOnObject[o] = objects->world().contactForce(o);
   }
   void receiveBoundaryObjects() {
     if (objectsAsBoundary()) receiveObjects();

@@ -110,6 +110,8 @@ std::vector<ObjectStats> Simulation::objectStats() const {
     stats.velocity = {info.velocity.x, info.velocity.y, info.velocity.z};
     const Vec3 f = s.fluidForceOnObject[o];
     stats.fluidForce = {f.x, f.y, f.z};
+    stats.contactForce = {info.contactForce.x, info.contactForce.y, info.contactForce.z};
+    stats.startCentre = {info.startCentre.x, info.startCentre.y, info.startCentre.z};
     stats.brokenSprings = info.brokenSprings;
     out.push_back(stats);
   }

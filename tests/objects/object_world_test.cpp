@@ -139,6 +139,54 @@ TEST(ObjectWorld, RigidSphereComesToRestOnAFloor) {
   EXPECT_LT(std::abs(rest.centreOfMass.x), 0.05f);
 }
 
+// Each object's contact force (what a force probe on a clamp reads): nothing before the ball
+// lands; then, over half a second of the ball settling on the floor, its impulse with gravity's
+// is the ball's change of momentum, and the floor feels the opposite at every step.
+TEST(ObjectWorld, ContactForcesAreTheImpulseThatHoldsTheBallUp) {
+  ObjectDesc floor = box({0, -0.04, 0}, {0.12, 0.01, 0.12}, 0.01, ObjectMotion::Kinematic);
+  floor.name = "floor";
+  ObjectDesc ball = sphere({0, -0.03 + 0.01 + 0.05 + 0.02, 0}, 0.05, 0.01);
+  WorldSettings s = settings({0, -9.81f, 0});
+  s.contact = {5000.0f, 20.0f, 2.0f};
+  ObjectWorld world({floor, ball}, s);
+  world.step(1e-3, {});  // still 2 cm in the air
+  EXPECT_EQ(length(world.info(0).contactForce), 0.0f);
+  EXPECT_EQ(length(world.info(1).contactForce), 0.0f);
+  for (int step = 0; step < 1500; ++step) world.step(1e-3, {});
+  const ObjectInfo before = world.info(1);
+  double impulse = 0.0, largestImbalance = 0.0;
+  constexpr int kSteps = 500;
+  constexpr double kDt = 1e-3;
+  for (int step = 0; step < kSteps; ++step) {
+    world.step(kDt, {});
+    impulse += world.contactForce(1).y * kDt;
+    largestImbalance =
+        std::max(largestImbalance, double(length(world.contactForce(0) + world.contactForce(1))));
+  }
+  const ObjectInfo after = world.info(1);
+  const double weight = before.mass * 9.81, duration = kSteps * kDt;
+  const double momentumChange = before.mass * (double(after.velocity.y) - before.velocity.y);
+  EXPECT_NEAR(impulse - weight * duration, momentumChange, 0.005 * weight * duration);
+  EXPECT_NEAR(impulse / duration, weight, 0.02 * weight);  // nearly at rest
+  EXPECT_LT(largestImbalance, 1e-4 * weight);
+  EXPECT_NEAR(world.info(0).startCentre.y, -0.04, 1e-6);
+}
+
+// The plate squeezing the tube is pushed back up, harder the deeper it goes, and the tube
+// feels the opposite.
+TEST(ObjectWorld, AClampFeelsTheTubeItSqueezes) {
+  ObjectWorld world(clampOnTube(), clampSettings());
+  double at40ms = 0.0;
+  for (int ms = 1; ms <= 100; ++ms) {
+    world.step(1e-3, {});
+    const Vec3 onClamp = world.contactForce(1);
+    EXPECT_NEAR(world.contactForce(0).y, -onClamp.y, 1e-4 * std::abs(onClamp.y) + 1e-9);
+    if (ms == 40) at40ms = onClamp.y;
+  }
+  EXPECT_GT(at40ms, 0.0);
+  EXPECT_GT(world.contactForce(1).y, 3.0 * at40ms);  // measured 0.059 N against 0.009 N
+}
+
 TEST(ObjectWorld, SubstepsResolveTheStiffestSpring) {
   ObjectDesc d = tube({0, 0, 0}, 0.01, 0.04, 0.0025);
   d.deformable.stiffness = 100.0;

@@ -1,7 +1,11 @@
-// The viewer's probe: where it is parked, and the picking that drags it under the cursor.
+// The viewer's probe: where it is parked, and the picking that grabs it, or any kinematic
+// object, under the cursor and drags it.
 #include <gtest/gtest.h>
 
 #include "probe.hpp"
+
+#include <cstdint>
+#include <vector>
 
 namespace sph::view {
 namespace {
@@ -46,6 +50,42 @@ TEST(Probe, DraggingFollowsTheCursorAtTheProbesDepth) {
   const render::Vec3f moved = render::subtract(*right, c.target);
   EXPECT_NEAR(render::dot(moved, forward), 0.0f, 1e-4f);
   EXPECT_GT(render::dot(moved, render::cross(forward, {0, 1, 0})), 0.0f);
+}
+
+// Two objects on the line of sight and one beside it: the click takes the nearest one it may
+// move, within reach of the ray.
+TEST(Probe, AClickGrabsTheNearestKinematicObjectUnderTheCursor) {
+  const render::OrbitCamera c = camera();
+  const Ray ray = rayThroughPixel(c, 400, 300, 800, 600);
+  const auto onRay = [&](float t, float aside) {
+    const render::Vec3f side = render::normalize(render::cross(ray.direction, {0, 1, 0}));
+    return render::add(render::add(ray.origin, render::scale(ray.direction, t)),
+                       render::scale(side, aside));
+  };
+  std::vector<float> position;
+  std::vector<std::int32_t> object;
+  const auto place = [&](render::Vec3f p, std::int32_t o) {
+    for (int a = 0; a < 3; ++a) position.push_back(p[a]);
+    object.push_back(o);
+  };
+  place(onRay(0.5f, 0.0f), -1);   // fluid, in front of everything
+  place(onRay(0.8f, 0.002f), 0);  // a rigid body (not grabbable), in front
+  place(onRay(1.0f, 0.004f), 1);  // a clamp, behind it
+  place(onRay(1.2f, 0.0f), 2);    // another, further
+  place(onRay(0.6f, 0.05f), 2);   // ... whose other particle is off the ray
+  place(onRay(-0.5f, 0.0f), 1);   // behind the eye
+  const std::vector<bool> kinematic = {false, true, true};
+  const auto pick = pickObject(ray, position, object, kinematic, 0.01f);
+  ASSERT_TRUE(pick.has_value());
+  EXPECT_EQ(pick->object, 1u);
+  EXPECT_NEAR(pick->distance, 1.0f, 1e-4f);
+  // A tighter reach misses the clamp (4 mm off the ray) and takes the one on it.
+  const auto tight = pickObject(ray, position, object, kinematic, 0.003f);
+  ASSERT_TRUE(tight.has_value());
+  EXPECT_EQ(tight->object, 2u);
+  // Nothing that may move under the cursor: nothing grabbed.
+  EXPECT_FALSE(pickObject(ray, position, object, {true, false, false}, 0.001f).has_value());
+  EXPECT_FALSE(pickObject(ray, position, object, {}, 1.0f).has_value());
 }
 
 }  // namespace

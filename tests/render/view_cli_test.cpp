@@ -43,13 +43,17 @@ TEST(ViewCli, OpensUnderXvfbRunsAndWritesAScreenshotShowingTheFluid) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path scene = dir / "block.json";
-  // A block of fluid on the floor of a tank; the camera frames the domain.
+  // A block of fluid on the floor of a tank, against a kinematic paddle whose force the panel
+  // plots; the camera frames the domain.
   std::ofstream(scene) << R"({
     "name": "block",
     "domain": {"min": [0, 0, 0], "max": [0.1, 0.1, 0.1]},
     "fluid": {"spacing": 0.005, "blocks": [{"min": [0, 0, 0], "max": [0.1, 0.04, 0.1]}]},
     "walls": [{"type": "tank", "min": [0, 0, 0], "max": [0.1, 0.1, 0.1]}],
     "time": {"duration": 1.0},
+    "objects": [{"name": "paddle", "motion": "kinematic",
+                 "shape": {"type": "box", "center": [0.07, 0.03, 0.05],
+                           "half_extents": [0.004, 0.015, 0.03]}}],
     "probes": [{"name": "floor", "type": "point", "position": [0.05, 0.01, 0.05]},
                {"name": "gauge", "type": "level", "from": [0.05, 0, 0.05], "to": [0.05, 0.1, 0.05]}]
   })";
