@@ -189,10 +189,7 @@ void drawPanel(Simulation& sim, ViewerState& state, const render::ValueRange& co
   if (state.watching && ImGui::CollapsingHeader("force", ImGuiTreeNodeFlags_DefaultOpen))
     watchedForce(state);
   ImGui::TextDisabled("left drag: turn   right drag: pan   wheel: zoom");
-  if (state.grabbable)
-    ImGui::TextDisabled(state.probe
-                            ? "ctrl + left drag: move the probe sphere or a kinematic object"
-                            : "ctrl + left drag: move a kinematic object");
+  if (state.grabbable) ImGui::TextDisabled("ctrl + left drag: move a kinematic object");
   if (!state.message.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
     ImGui::TextWrapped("%s", state.message.c_str());

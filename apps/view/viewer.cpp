@@ -262,7 +262,6 @@ void runViewer(const Scene& original, const ViewOptions& options) {
   state.fluidPath = feed.path();
   state.probes.reset(sim->probeColumns());
   state.draw.colour = *mode;
-  state.probe = options.probe;
   // The scene's own first kinematic object (the artery's clamp) is watched from the start.
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     if (scene.objects[o].motion != ObjectMotion::Kinematic) continue;

@@ -15,7 +15,6 @@ struct ViewerState {
   bool paused = false;
   bool stepOnce = false;        // one step, then paused
   bool resetRequested = false;  // rebuild the simulation from the scene
-  bool probe = false;           // the scene has the sphere the mouse drags
   bool grabbable = false;       // the scene has a kinematic object ctrl + drag can move
   render::DrawSettings draw;
   std::string message;     // the last error, shown in the panel until the next reset
