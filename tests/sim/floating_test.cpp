@@ -71,6 +71,11 @@ class FloatingBodies : public ::testing::TestWithParam<Backend> {};
 TEST_P(FloatingBodies, BoxFloatsAtArchimedesDraftAndBallRestsOnTheFloor) {
   SPH_SKIP_UNLESS_AVAILABLE(GetParam());
   Simulation sim(tankWithBodies(), testing::on(GetParam()));
+  if (testing::kSanitized) {  // a memory check; the figures are the Release build's
+    sim.advanceTo(0.05);
+    EXPECT_EQ(sim.removedCount(), 0u);
+    return;
+  }
   sim.advanceTo(1.0);
   // Averaged over 0.25 s of settled bobbing.
   double draft = 0.0, ballHeight = 0.0, ballSpeed = 0.0;
