@@ -98,8 +98,8 @@ TEST_P(FloatingBodies, BoxFloatsAtArchimedesDraftAndBallRestsOnTheFloor) {
   EXPECT_NEAR(box.mass, 500.0 * 8.0 * kBoxHalf[0] * kBoxHalf[1] * kBoxHalf[2], 1e-6);
   std::printf("draft %.4f m, Archimedes %.4f m (%+.1f %%)\n", draft, expected,
               100.0 * (draft / expected - 1.0));
-  // Within 10 % at this resolution (the box is 8 fluid spacings tall).
-  EXPECT_NEAR(draft, expected, 0.10 * expected)
+  // Within 5 % with the box 8 fluid spacings tall (measured +2.6 % on the CPU).
+  EXPECT_NEAR(draft, expected, 0.05 * expected)
       << "draft " << draft << " m, Archimedes " << expected;
   // The ball lies on the floor (y = 0), its centre a radius up, within a fluid spacing, still.
   EXPECT_NEAR(ballHeight, kBallRadius, kSpacing);
