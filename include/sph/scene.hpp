@@ -117,8 +117,15 @@ struct FluidDesc {
   double densityDiffusion = 0.1;  // δ of δ-SPH, with continuity density
   PressureForm pressureForm = PressureForm::Symmetric;
   ViscosityModel viscosityModel = ViscosityModel::Artificial;
-  double viscosity = 0.0;       // μ (Pa·s) for Müller; α (dimensionless) for artificial
-  double wallFriction = 0.0;    // fraction of the fluid viscosity applied against walls
+  // α (dimensionless) for artificial; μ (Pa·s) for Müller, whose scenes give it (the loader's
+  // default for it is water's, 0.001).
+  double viscosity = 0.1;
+  // The fraction of the fluid's viscosity that acts against walls: 0 free slip, 2 no-slip.
+  // Neither default is 0: the walls' mirrored pressure is not the gradient of an energy and
+  // pumps energy into the fluid, which only viscosity against the walls takes out. A block of
+  // water at rest in a tank went through the walls inviscid, and also with α = 0.1 and no
+  // friction (docs/validation.md, "Walls and viscosity").
+  double wallFriction = 1.0;
   double surfaceTension = 0.0;  // σ (N/m); 0 disables
   // |∇c| (1/m) above which a particle is on the surface and surface tension acts; unset: 0.22/h,
   // the 2021 CUDA SPH tutorial's 7.065 at its h = 1/32, scaled to ours.

@@ -35,7 +35,10 @@ DomainDesc readDomain(const ObjectReader& in) {
 
 void readViscosity(const ObjectReader& in, FluidDesc& fluid) {
   fluid.viscosityModel = in.choice("model", fluid.viscosityModel, kViscosityNames);
-  fluid.viscosity = in.number("value", fluid.viscosity, kNonNegative);
+  constexpr double kWaterViscosity = 0.001;  // Pa·s, at 20 °C
+  fluid.viscosity = in.number(
+      "value", fluid.viscosityModel == ViscosityModel::Muller ? kWaterViscosity : fluid.viscosity,
+      kNonNegative);
   fluid.wallFriction = in.number("wall_friction", fluid.wallFriction, kNonNegative);
 }
 
