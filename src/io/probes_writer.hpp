@@ -2,12 +2,11 @@
 // column per probe quantity with its unit in the name (README, "Outputs").
 #pragma once
 
-#include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <string>
 #include <vector>
 
+#include "io/row_file.hpp"
 #include "sph/stats.hpp"
 
 namespace sph::io {
@@ -18,15 +17,12 @@ class ProbesWriter {
   // OutputError naming the path and the system error when it cannot be written.
   ProbesWriter(std::filesystem::path csvFile, const std::vector<std::string>& columns);
 
-  // Writes the rows and flushes them. A NaN (a point probe in the air) is written "nan".
+  // Writes the rows, all of them or none (io/row_file.hpp). A NaN (a point probe in the air)
+  // is written "nan".
   void append(const std::vector<ProbeRow>& rows);
 
  private:
-  struct FileCloser {
-    void operator()(std::FILE* file) const { std::fclose(file); }
-  };
-  std::filesystem::path path_;
-  std::unique_ptr<std::FILE, FileCloser> file_;
+  RowFile file_;
 };
 
 }  // namespace sph::io

@@ -1,12 +1,11 @@
 // stats.csv: one row of FrameStats per output frame (the command-line contract in README.md).
 #pragma once
 
-#include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <string>
 #include <vector>
 
+#include "io/row_file.hpp"
 #include "sph/stats.hpp"
 
 namespace sph::io {
@@ -19,21 +18,15 @@ class StatsWriter {
   // on it, N) and <name>_com_x .. _z (its centre of mass, m).
   explicit StatsWriter(std::filesystem::path csvFile, std::vector<std::string> objectNames = {});
 
-  // Writes one row and flushes it, so every row appended is on disk even if the process dies
-  // right after. The solver's iterations per step are those of the steps since the last row.
+  // Writes one row, whole or not at all (io/row_file.hpp), so every row appended is in the
+  // file even if the process dies right after. The solver's iterations per step are those of
+  // the steps since the last row.
   void append(const FrameStats& stats);
 
  private:
-  struct FileCloser {
-    void operator()(std::FILE* file) const { std::fclose(file); }
-  };
-
-  void flushOrThrow();
-
-  std::filesystem::path path_;
   std::size_t objectCount_;
   FrameStats previous_;  // the last row's counts
-  std::unique_ptr<std::FILE, FileCloser> file_;
+  RowFile file_;
 };
 
 }  // namespace sph::io

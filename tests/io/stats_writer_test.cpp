@@ -2,7 +2,11 @@
 #include "sph/error.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <filesystem>
 #include <fstream>
@@ -155,6 +159,49 @@ TEST_F(StatsWriterTest, AFullDiskIsAnOutputErrorNamingTheFileAndTheReason) {
     EXPECT_NE(message.find("cannot write '/dev/full'"), std::string::npos) << message;
     EXPECT_NE(message.find("No space left on device"), std::string::npos) << message;
   }
+}
+
+// A disk that fills up part-way through a row (here a file size limit, in a child process):
+// the run is told, the row goes whole, and the rows before stay readable.
+TEST_F(StatsWriterTest, ARowTheDiskTakesOnlyPartOfIsCutBackAndTheRowsBeforeStay) {
+  const fs::path reference = dir_ / "reference.csv";
+  { StatsWriter writer(reference); }
+  const std::uintmax_t header = fs::file_size(reference);
+  {
+    StatsWriter writer(reference);
+    writer.append(makeStats(1));
+  }
+  const std::uintmax_t row = fs::file_size(reference) - header;
+  const fs::path file = dir_ / "stats.csv";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::signal(SIGXFSZ, SIG_IGN);  // a write past the limit then fails with EFBIG
+    const rlim_t limit = rlim_t(header + row + row / 2);
+    const rlimit size{limit, limit};
+    if (::setrlimit(RLIMIT_FSIZE, &size) != 0) ::_exit(2);
+    try {
+      StatsWriter writer(file);
+      writer.append(makeStats(1));
+      writer.append(makeStats(2));  // half of it fits
+      ::_exit(3);
+    } catch (const OutputError& error) {
+      const std::string message = error.what();
+      const bool named = message.find("cannot write '" + file.string() + "'") != std::string::npos;
+      ::_exit(named && message.find("File too large") != std::string::npos ? 0 : 4);
+    } catch (...) {
+      ::_exit(5);
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "2: no limit; 3: no error; 4: the message; 5: another error";
+  EXPECT_EQ(fs::file_size(file), header + row);
+  const std::vector<std::string> lines = readLines(file);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], kHeader);
+  EXPECT_EQ(split(lines[1]).size(), 19u);
 }
 
 }  // namespace

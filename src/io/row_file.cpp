@@ -1,0 +1,40 @@
+#include "io/row_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <utility>
+
+#include "io/file_error.hpp"
+
+namespace sph::io {
+
+RowFile::RowFile(std::filesystem::path path, const std::string& header) : path_(std::move(path)) {
+  fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) throwFileError("open", path_, errno);
+  append(header);
+}
+
+RowFile::~RowFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void RowFile::append(const std::string& rows) {
+  std::size_t written = 0;
+  while (written < rows.size()) {
+    const ssize_t n = ::write(fd_, rows.data() + written, rows.size() - written);
+    if (n > 0) {
+      written += std::size_t(n);
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    const int error = n < 0 ? errno : ENOSPC;
+    // What reached the file of these rows goes: the rows before stay whole.
+    if (::ftruncate(fd_, off_t(committed_)) == 0) ::lseek(fd_, off_t(committed_), SEEK_SET);
+    throwFileError("write", path_, error);
+  }
+  committed_ += rows.size();
+}
+
+}  // namespace sph::io

@@ -1,0 +1,35 @@
+// A CSV file that grows by whole rows (stats.csv, probes.csv): each append reaches the file
+// whole or not at all, so a disk that fills up mid-run leaves every earlier row readable and no
+// row cut short.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+namespace sph::io {
+
+class RowFile {
+ public:
+  // Creates (truncates) the file and writes `header` (a line, its newline included). Throws
+  // OutputError naming the path and the system error.
+  RowFile(std::filesystem::path path, const std::string& header);
+  ~RowFile();
+  RowFile(const RowFile&) = delete;
+  RowFile& operator=(const RowFile&) = delete;
+
+  // Appends `rows` (whole lines), handed to the system at once: a process that dies right
+  // after loses none of them. When the system takes only part (a full disk, a file size
+  // limit), the file is cut back to the rows before and OutputError names the path and the
+  // reason.
+  void append(const std::string& rows);
+
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+  int fd_ = -1;
+  std::size_t committed_ = 0;  // bytes of whole rows in the file
+};
+
+}  // namespace sph::io
