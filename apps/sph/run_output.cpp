@@ -1,6 +1,8 @@
 #include "run_output.hpp"
 
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "io/frame_writer.hpp"
 #include "sph/error.hpp"
@@ -11,14 +13,25 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The files a run writes; --force removes these and nothing else.
+// The files a run writes; --force removes these, the temporaries of a run killed while writing
+// them, and nothing else.
 const char* const kRunFiles[] = {"frames",       "frames.pvd",   "stats.csv",    "probes.csv",
                                  "summary.json", "boundary.vtp", "boundary.ply", "boundary.csv",
                                  "images",       "video.mp4"};
 
+// A file and what a run killed while writing it left: "<name>.tmp" (io/frame_writer.hpp).
+std::vector<fs::path> runFiles(const fs::path& dir) {
+  std::vector<fs::path> files;
+  for (const char* name : kRunFiles) {
+    files.push_back(dir / name);
+    files.push_back(dir / (std::string(name) + ".tmp"));
+  }
+  return files;
+}
+
 bool holdsEarlierRun(const fs::path& dir) {
-  for (const char* name : kRunFiles)
-    if (fs::exists(dir / name)) return true;
+  for (const fs::path& file : runFiles(dir))
+    if (fs::exists(file)) return true;
   return false;
 }
 
@@ -32,11 +45,11 @@ RunOutput::RunOutput(fs::path dir, FrameFormat format, bool force,
       throw InputError(dir_.string() +
                        ": holds an earlier run; pass --force to overwrite it or choose another "
                        "--out directory");
-    for (const char* name : kRunFiles) {
+    for (const fs::path& file : runFiles(dir_)) {
       std::error_code error;
-      fs::remove_all(dir_ / name, error);
+      fs::remove_all(file, error);
       if (error)
-        throw OutputError("cannot remove the earlier run's '" + (dir_ / name).string() +
+        throw OutputError("cannot remove the earlier run's '" + file.string() +
                           "': " + error.message());
     }
   }

@@ -122,10 +122,21 @@ TEST_F(Cli, NeverOverwritesAnEarlierRunUnlessForced) {
   EXPECT_EQ(again.code, 2);
   EXPECT_NE(again.output.find("--force"), std::string::npos) << again.output;
   EXPECT_EQ(readFile(out / "stats.csv"), before) << "the earlier run must be untouched";
+  // What a run killed while writing its summary (kill -9) left: --force clears it too, and
+  // leaves what is not a run's.
+  std::ofstream(out / "summary.json.tmp") << "{\"stat";
+  std::ofstream(out / "notes.txt") << "mine";
   const Result forced = runSph("run " + scene_.string() + " --out " + out.string() +
                                " --quiet --force --set time.duration=0.01");
   EXPECT_EQ(forced.code, 0) << forced.output;
   EXPECT_NE(readFile(out / "stats.csv"), before);
+  EXPECT_FALSE(fs::exists(out / "summary.json.tmp"));
+  EXPECT_EQ(readFile(out / "notes.txt"), "mine");
+  // A directory holding only such a temporary holds an earlier run.
+  const fs::path killed = dir_ / "killed";
+  fs::create_directories(killed);
+  std::ofstream(killed / "frames.pvd.tmp") << "<?xml";
+  EXPECT_EQ(runSph("run " + scene_.string() + " --out " + killed.string() + " --quiet").code, 2);
 }
 
 TEST_F(Cli, BadInputExitsTwoNamingFileAndKey) {
