@@ -133,7 +133,8 @@ void grab(Simulation& sim, const Ray& ray, Grab& held, ViewerState& state) {
   for (std::size_t o = 0; o < kinematic.size(); ++o)
     kinematic[o] = scene.objects[o].motion == ObjectMotion::Kinematic;
   const ParticleFrame solids = sim.solidFrame(false);
-  // Within a particle's diameter of the ray: the object's own spacing, or the fluid's.
+  // Within a fluid spacing of the ray: an object's particles are that far apart unless it sets
+  // a spacing of its own.
   const float reach = float(scene.fluid.spacing);
   const std::optional<Pick> pick =
       pickObject(ray, solids.position, solids.object, kinematic, reach);

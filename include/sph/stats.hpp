@@ -15,8 +15,9 @@ struct ObjectStats {
   std::array<double, 3> centreOfMass{0, 0, 0};  // m
   std::array<double, 3> velocity{0, 0, 0};      // of the centre of mass, m/s
   std::array<double, 3> fluidForce{0, 0, 0};    // the fluid's contact force on it, last step, N
-  // The other objects' and the walls' contact push on it over the engine's last finished step,
-  // N: what a clamp squeezing a vessel feels (kinematic objects feel it, and do not yield).
+  // The other objects' contact push on it over the engine's last finished step, and the walls'
+  // on a body that moves, N: what a clamp squeezing a vessel feels (a kinematic object feels it
+  // and does not yield).
   std::array<double, 3> contactForce{0, 0, 0};
   // Its centre of mass as built: Simulation::steerObject's offsets are from here.
   std::array<double, 3> startCentre{0, 0, 0};

@@ -1,7 +1,6 @@
 #include "io/probes_writer.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -15,13 +14,6 @@ std::string headerOf(const std::vector<std::string>& columns) {
   return header + "\n";
 }
 
-void appendNumber(std::string& out, double v) {
-  char buffer[32];
-  const int n = std::snprintf(buffer, sizeof buffer, "%.9g", v);
-  if (n > 0)
-    out.append(buffer, std::size_t(n) < sizeof buffer ? std::size_t(n) : sizeof buffer - 1);
-}
-
 }  // namespace
 
 ProbesWriter::ProbesWriter(std::filesystem::path csvFile, const std::vector<std::string>& columns)
@@ -31,13 +23,12 @@ void ProbesWriter::append(const std::vector<ProbeRow>& rows) {
   if (rows.empty()) return;
   std::string text;
   for (const ProbeRow& row : rows) {
-    appendNumber(text, row.time);
+    appendFormatted(text, "%.9g", row.time);
     for (double v : row.values) {
-      text += ',';
       if (std::isnan(v)) {
-        text += "nan";
+        text += ",nan";
       } else {
-        appendNumber(text, v);
+        appendFormatted(text, ",%.9g", v);
       }
     }
     text += '\n';

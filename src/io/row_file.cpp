@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdarg>
+#include <cstdio>
 #include <utility>
 
 #include "io/file_error.hpp"
@@ -35,6 +37,16 @@ void RowFile::append(const std::string& rows) {
     throwFileError("write", path_, error);
   }
   committed_ += rows.size();
+}
+
+void appendFormatted(std::string& row, const char* format, ...) {
+  char buffer[512];
+  va_list arguments;
+  va_start(arguments, format);
+  const int n = std::vsnprintf(buffer, sizeof buffer, format, arguments);
+  va_end(arguments);
+  if (n > 0)
+    row.append(buffer, std::size_t(n) < sizeof buffer ? std::size_t(n) : sizeof buffer - 1);
 }
 
 }  // namespace sph::io

@@ -32,4 +32,8 @@ class RowFile {
   std::size_t committed_ = 0;  // bytes of whole rows in the file
 };
 
+// Appends printf-formatted text to a row being built.
+void appendFormatted(std::string& row, const char* format, ...)
+    __attribute__((format(printf, 2, 3)));
+
 }  // namespace sph::io

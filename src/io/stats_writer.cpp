@@ -1,22 +1,12 @@
 #include "io/stats_writer.hpp"
 
 #include <cinttypes>
-#include <cstdio>
 #include <string>
 #include <utility>
 
 namespace sph::io {
 
 namespace {
-
-// Appends printf-formatted text to `out`.
-template <class... Args>
-void appendFormatted(std::string& out, const char* format, Args... args) {
-  char buffer[512];
-  const int n = std::snprintf(buffer, sizeof buffer, format, args...);
-  if (n > 0)
-    out.append(buffer, std::size_t(n) < sizeof buffer ? std::size_t(n) : sizeof buffer - 1);
-}
 
 std::string headerOf(const std::vector<std::string>& objectNames) {
   std::string header =

@@ -59,9 +59,9 @@ struct ObjectInfo {
   Vec3 velocity{0, 0, 0};         // of the centre of mass, m/s
   std::size_t springs = 0;        // deformables (xpbd: distance constraints, not bending)
   std::size_t brokenSprings = 0;  // deformables, including those cut at the start
-  // The other objects' and the static particles' contact push on it, averaged over the last
-  // step (N): what a clamp squeezing a vessel feels. A kinematic object feels it too, though
-  // it does not move for it.
+  // The other objects' contact push on it, and the static particles' on a body that moves,
+  // averaged over the last step (N): what a clamp squeezing a vessel feels. A kinematic object
+  // feels the other objects' too, though it does not move for it.
   Vec3 contactForce{0, 0, 0};
   Vec3 startCentre{0, 0, 0};  // the centre of mass as built: steer's offsets are from here
 };
