@@ -110,14 +110,19 @@ TEST(ObjectWorld, KinematicPlateSqueezesADeformableTube) {
   EXPECT_GT(world.info(0).velocity.y, -0.1f);
 }
 
-TEST(ObjectWorld, RigidSphereComesToRestOnAFloor) {
+// A kinematic floor, its top layer of particles at y = -0.03, and a rigid ball of radius 5 cm
+// held `drop` above touching it, under gravity.
+ObjectWorld ballAboveFloor(double drop) {
   ObjectDesc floor = box({0, -0.04, 0}, {0.12, 0.01, 0.12}, 0.01, ObjectMotion::Kinematic);
   floor.name = "floor";
-  // Dropped from 5 cm above contact: lands at ~1 m/s.
-  ObjectDesc ball = sphere({0, -0.03 + 0.01 + 0.05 + 0.05, 0}, 0.05, 0.01);
+  ObjectDesc ball = sphere({0, -0.03 + 0.01 + 0.05 + drop, 0}, 0.05, 0.01);
   WorldSettings s = settings({0, -9.81f, 0});
   s.contact = {5000.0f, 20.0f, 2.0f};
-  ObjectWorld world({floor, ball}, s);
+  return ObjectWorld({floor, ball}, s);
+}
+
+TEST(ObjectWorld, RigidSphereComesToRestOnAFloor) {
+  ObjectWorld world = ballAboveFloor(0.05);  // lands at ~1 m/s
   const ParticleState& p = world.particles();
   const ObjectInfo ballInfo = world.info(1);
   double lowestGap = 1.0;
@@ -143,12 +148,7 @@ TEST(ObjectWorld, RigidSphereComesToRestOnAFloor) {
 // lands; then, over half a second of the ball settling on the floor, its impulse with gravity's
 // is the ball's change of momentum, and the floor feels the opposite at every step.
 TEST(ObjectWorld, ContactForcesAreTheImpulseThatHoldsTheBallUp) {
-  ObjectDesc floor = box({0, -0.04, 0}, {0.12, 0.01, 0.12}, 0.01, ObjectMotion::Kinematic);
-  floor.name = "floor";
-  ObjectDesc ball = sphere({0, -0.03 + 0.01 + 0.05 + 0.02, 0}, 0.05, 0.01);
-  WorldSettings s = settings({0, -9.81f, 0});
-  s.contact = {5000.0f, 20.0f, 2.0f};
-  ObjectWorld world({floor, ball}, s);
+  ObjectWorld world = ballAboveFloor(0.02);
   world.step(1e-3, {});  // still 2 cm in the air
   EXPECT_EQ(length(world.info(0).contactForce), 0.0f);
   EXPECT_EQ(length(world.info(1).contactForce), 0.0f);
