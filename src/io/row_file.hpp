@@ -24,8 +24,6 @@ class RowFile {
   // reason.
   void append(const std::string& rows);
 
-  const std::filesystem::path& path() const { return path_; }
-
  private:
   std::filesystem::path path_;
   int fd_ = -1;
