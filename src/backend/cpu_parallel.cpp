@@ -30,6 +30,12 @@ void setThreadCount(int n) {
 #endif
 }
 
+void runSeriallyOnThisThread() {
+#ifdef _OPENMP
+  omp_set_num_threads(1);  // the calling thread's own setting
+#endif
+}
+
 std::uint32_t exclusiveScan(std::uint32_t* data, std::size_t n) {
   std::uint32_t sum = 0;
   for (std::size_t i = 0; i < n; ++i) {

@@ -15,6 +15,12 @@ namespace sph::backend {
 int threadCount();
 void setThreadCount(int n);  // n ≤ 0: all hardware threads
 
+// Makes the parallel primitives run on the calling thread alone. For a thread beside the one
+// that steps (the frame writer): a team of its own would make OpenMP's threads outnumber the
+// cores, and libgomp then lets every team's workers sleep at each barrier instead of waiting
+// briefly; a 2-thread run of the artery stepped at half speed so.
+void runSeriallyOnThisThread();
+
 // Throws std::runtime_error when this CPU lacks the instruction set the library was compiled
 // for (SPH_CPU_ARCH), instead of dying on an illegal instruction in a pass.
 void requireCompiledInstructionSet();

@@ -12,11 +12,11 @@ bool inBox(const DVec3& x, const DVec3& lo, const DVec3& hi) {
   return x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z;
 }
 
-// Marks the particles in the region that lie within `reach` of the bounding box of an object
-// other than their own. Two particles in contact are both marked; a vessel's thousands of
-// particles, of which a clamp touches a few hundred, are mostly not, and are neither sorted
-// into the grid nor searched from.
-void markNear(const ContactParticles& p, double reach, ContactSearch& s) {
+}  // namespace
+
+// Two particles in contact are both marked; a vessel's thousands of particles, of which a clamp
+// touches a few hundred, are mostly not, and are neither sorted into the grid nor searched from.
+void markNearOtherObjects(const ContactParticles& p, double reach, ContactSearch& s) {
   const std::size_t n = p.position.size();
   std::size_t objects = 0;
   for (std::size_t i = 0; i < n; ++i) objects = std::max(objects, std::size_t(p.object[i]) + 1);
@@ -47,12 +47,10 @@ void markNear(const ContactParticles& p, double reach, ContactSearch& s) {
   }
 }
 
-}  // namespace
-
 std::size_t addContactForces(const ContactCoefficients& coefficients, const ContactParticles& p,
                              float maxRadius, ContactSearch& search, std::vector<DVec3>& force) {
   const double reachMax = 2.0 * double(maxRadius);
-  markNear(p, reachMax, search);
+  markNearOtherObjects(p, reachMax, search);
   PointGrid& grid = search.grid;
   grid.build(p.position, reachMax, search.near);
   std::size_t touching = 0;
@@ -60,9 +58,11 @@ std::size_t addContactForces(const ContactCoefficients& coefficients, const Cont
     // Pairs are found from a particle that can move (kinematic floors hold many particles that
     // need no search); each pair once: from the lower index when both can move. The order is
     // fixed, so the sums are the same on every run.
-    if (!p.movable[i] || !search.near[i]) continue;
+    if (p.role[i] == ContactRole::Fixed || !search.near[i]) continue;
     grid.forEachCandidate(p.position[i], reachMax, [&](std::uint32_t j) {
-      if (p.object[j] == p.object[i] || (p.movable[j] && j <= i)) return;
+      if (p.object[j] == p.object[i] || (p.role[j] != ContactRole::Fixed && j <= i)) return;
+      // Between two particles neither of which is pushed, the contact is a constraint.
+      if (p.role[i] != ContactRole::Pushed && p.role[j] != ContactRole::Pushed) return;
       const float reach = p.radius[i] + p.radius[j];
       const Vec3 offset = toF(p.position[i] - p.position[j]);
       if (lengthSquared(offset) >= reach * reach) return;
@@ -83,7 +83,7 @@ std::size_t addStaticContactForces(const ContactCoefficients& coefficients,
                                    std::vector<DVec3>& force) {
   std::size_t touching = 0;
   for (std::size_t i = 0; i < p.position.size(); ++i) {
-    if (!p.movable[i]) continue;
+    if (p.role[i] != ContactRole::Pushed) continue;
     const float reach = p.radius[i] + staticRadius;
     staticGrid.forEachCandidate(p.position[i], reach, [&](std::uint32_t j) {
       const Vec3 offset = toF(p.position[i] - statics[j]);

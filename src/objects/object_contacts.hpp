@@ -11,12 +11,20 @@
 
 namespace sph::objects {
 
+// How a particle meets the particles of other objects.
+enum class ContactRole : std::uint8_t {
+  Fixed,      // kinematic or pinned: moves only as prescribed
+  Pushed,     // of a rigid body or a spring network: contacts are forces on it (here)
+  Projected,  // of an XPBD deformable: contacts are constraints on its position
+              // (contact_constraints.hpp), unless the other particle is Pushed
+};
+
 struct ContactParticles {
   const std::vector<DVec3>& position;
   const std::vector<DVec3>& velocity;
   const std::vector<float>& radius;
   const std::vector<std::int32_t>& object;
-  const std::vector<std::uint8_t>& movable;  // 0: kinematic or pinned
+  const std::vector<ContactRole>& role;
   // Only particles in here touch anything (WorldSettings::regionMin, regionMax).
   DVec3 regionMin, regionMax;
 };
@@ -28,14 +36,18 @@ struct ContactSearch {
   std::vector<DVec3> boxMin, boxMax;  // by object
 };
 
+// Marks in `search.near` the particles in the region within `reach` of the bounding box of an
+// object other than their own: the only ones that can touch another object.
+void markNearOtherObjects(const ContactParticles& p, double reach, ContactSearch& search);
+
 // Adds to `force` the contact force of every overlapping pair of particles of different objects
-// of which at least one can move: equal and opposite, full spring, damped. Returns the number
+// of which at least one is Pushed: equal and opposite, full spring, damped. Returns the number
 // of touching pairs.
 std::size_t addContactForces(const ContactCoefficients& coefficients, const ContactParticles& p,
                              float maxRadius, ContactSearch& search, std::vector<DVec3>& force);
 
 // Adds to `force` the contact force of the static particles (in `staticGrid`, all of radius
-// `staticRadius`) on every movable particle touching one. Returns the number of touching pairs.
+// `staticRadius`) on every Pushed particle touching one. Returns the number of touching pairs.
 std::size_t addStaticContactForces(const ContactCoefficients& coefficients,
                                    const ContactParticles& p, const std::vector<DVec3>& statics,
                                    float staticRadius, const PointGrid& staticGrid,

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "objects/contact_constraints.hpp"
 #include "objects/kinematic_path.hpp"
 #include "objects/math3d.hpp"
 #include "objects/object_contacts.hpp"
@@ -107,6 +108,8 @@ struct ObjectWorld::Impl {
   std::vector<DVec3> contactImpulse;               // by object, over the step so far, N s
   std::vector<DVec3> contactForce;                 // by object, the last step's mean, N
   std::vector<std::uint8_t> movable;               // 0: kinematic or pinned
+  std::vector<ContactRole> role;                   // how each meets other objects
+  std::vector<double> inverseMass;                 // 1/kg of the Projected, 0 for the rest
   ParticleState published;
 
   std::vector<Object> objects;
@@ -120,10 +123,15 @@ struct ObjectWorld::Impl {
   bool contactsPossible = false;
   double fastestSpringOmega = 0.0;    // rad/s
   double fastestSpringDamping = 0.0;  // c / m_reduced, 1/s
-  double lightestContactMass = std::numeric_limits<double>::infinity();
+  // What a contact force pushes against: a whole rigid body (its mass as felt at its outermost
+  // particle), one free particle of a spring network; and one free particle of an XPBD
+  // deformable, which meets pushed particles by forces too.
+  double lightestPushedMass = std::numeric_limits<double>::infinity();
+  double lightestProjectedMass = std::numeric_limits<double>::infinity();
   int xpbdSubsteps = 0;  // the most any XPBD deformable asks for per step
   float minRadius = std::numeric_limits<float>::infinity(), maxRadius = 0.0f;
   ContactSearch contactSearch;
+  ContactConstraints contactConstraints;
   std::vector<DVec3> statics;  // settings.staticParticles
   PointGrid staticGrid;
 
@@ -134,6 +142,9 @@ struct ObjectWorld::Impl {
   void makeDeformable(const ObjectDesc& desc, Object& object, const std::string& where);
   void placeKinematic(const Object& object);
   void substep(double h, const std::vector<Vec3>& externalForce);
+  ContactParticles contactParticles() const;
+  StaticParticles staticParticles() const;
+  void projectXpbd(double h);
   void addContactImpulses(double h);
   void integrateDeformable(const SpringNetwork& net, double h);
   void integrateRigid(const Object& object, RigidBody& body, double h);
@@ -211,13 +222,19 @@ void ObjectWorld::Impl::addObject(const ObjectDesc& desc, std::size_t index) {
       placeKinematic(object);
       break;
   }
-  // What a contact pushes against: a whole rigid body (its mass as felt at its outermost
-  // particle), or one free particle of a deformable.
+  const bool projected =
+      desc.motion == ObjectMotion::Deformable && desc.deformable.model == DeformableModel::Xpbd;
   if (desc.motion == ObjectMotion::Rigid)
-    lightestContactMass = std::min(lightestContactMass, rigid[object.body].contactMass());
-  for (std::size_t i = object.first; i < object.first + object.count; ++i)
-    if (movable[i] && desc.motion == ObjectMotion::Deformable)
-      lightestContactMass = std::min(lightestContactMass, particleMass);
+    lightestPushedMass = std::min(lightestPushedMass, rigid[object.body].contactMass());
+  for (std::size_t i = object.first; i < object.first + object.count; ++i) {
+    role.push_back(!movable[i] ? ContactRole::Fixed
+                   : projected ? ContactRole::Projected
+                               : ContactRole::Pushed);
+    inverseMass.push_back(role.back() == ContactRole::Projected ? 1.0 / particleMass : 0.0);
+    if (!movable[i] || desc.motion != ObjectMotion::Deformable) continue;
+    double& lightest = projected ? lightestProjectedMass : lightestPushedMass;
+    lightest = std::min(lightest, particleMass);
+  }
   objects.push_back(std::move(object));
 }
 
@@ -341,17 +358,23 @@ void ObjectWorld::Impl::integrateRigid(const Object& object, RigidBody& body, do
   }
 }
 
+ContactParticles ObjectWorld::Impl::contactParticles() const {
+  return {position,        velocity, published.radius,        published.object,
+          role,            toD(settings.regionMin), toD(settings.regionMax)};
+}
+
+StaticParticles ObjectWorld::Impl::staticParticles() const {
+  return {statics, settings.staticRadius, staticGrid};
+}
+
+// Contacts with a pushed particle are forces, summed at the substep's start; the XPBD
+// deformables' other contacts are constraints, projected after the deformables' own at the
+// predicted positions, with the kinematic objects already where the substep ends.
 void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce) {
   const std::size_t n = position.size();
   std::fill(force.begin(), force.end(), DVec3{});
-  if (contactsPossible) {
-    const ContactParticles particles{position,
-                                     velocity,
-                                     published.radius,
-                                     published.object,
-                                     movable,
-                                     toD(settings.regionMin),
-                                     toD(settings.regionMax)};
+  if (contactsPossible && lightestPushedMass < std::numeric_limits<double>::infinity()) {
+    const ContactParticles particles = contactParticles();
     addContactForces(settings.contact, particles, maxRadius, contactSearch, force);
     if (!statics.empty())
       addStaticContactForces(settings.contact, particles, statics, settings.staticRadius,
@@ -367,7 +390,7 @@ void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce
   for (std::size_t b = 0; b < networks.size(); ++b) {
     SpringNetwork& net = networks[b];
     if (models[b] == DeformableModel::Xpbd) {
-      xpbdSubstep(net, xpbd[b], h, gravity, force, position, velocity, published.cut);
+      xpbdPredict(net, xpbd[b], h, gravity, force, position, velocity);
       continue;
     }
     integrateDeformable(net, h);
@@ -378,6 +401,26 @@ void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce
     if (object.motion == ObjectMotion::Rigid) integrateRigid(object, rigid[object.body], h);
     if (object.motion == ObjectMotion::Kinematic) placeKinematic(object);
   }
+  projectXpbd(h);
+}
+
+void ObjectWorld::Impl::projectXpbd(double h) {
+  if (lightestProjectedMass == std::numeric_limits<double>::infinity()) return;
+  for (std::size_t b = 0; b < networks.size(); ++b)
+    if (models[b] == DeformableModel::Xpbd) xpbdProject(networks[b], xpbd[b], h, position);
+  const StaticParticles walls = staticParticles();
+  if (contactsPossible) {
+    findContactConstraints(contactParticles(), maxRadius, walls, contactConstraints);
+    projectContactConstraints(settings.contact, h, inverseMass, published.radius,
+                              published.object, walls, contactConstraints, position,
+                              contactImpulse);
+  }
+  for (std::size_t b = 0; b < networks.size(); ++b)
+    if (models[b] == DeformableModel::Xpbd)
+      xpbdFinish(networks[b], xpbd[b], h, position, velocity, published.cut);
+  if (contactsPossible)
+    dampContactConstraints(settings.contact, h, inverseMass, published.object, walls,
+                           contactConstraints, position, velocity, contactImpulse);
 }
 
 // While `force` holds the contacts alone.
@@ -417,10 +460,15 @@ double ObjectWorld::Impl::stableSubstep() const {
     if (fastestSpringDamping > 0.0) h = std::min(h, kStepPerDampingRate / fastestSpringDamping);
   }
   if (contactsPossible) {
+    // Constraint contacts bound nothing; forces do, on the lightest thing they push (an XPBD
+    // particle too, when pushed particles may meet it).
+    const double mass = lightestPushedMass < std::numeric_limits<double>::infinity()
+                            ? std::min(lightestPushedMass, lightestProjectedMass)
+                            : std::numeric_limits<double>::infinity();
     const ContactCoefficients& k = settings.contact;
-    if (k.spring > 0.0f)
-      h = std::min(h, kStepPerOmega / std::sqrt(double(k.spring) / lightestContactMass));
-    const double dampingRate = (double(k.damping) + double(k.shear)) / lightestContactMass;
+    if (k.spring > 0.0f && mass < std::numeric_limits<double>::infinity())
+      h = std::min(h, kStepPerOmega / std::sqrt(double(k.spring) / mass));
+    const double dampingRate = (double(k.damping) + double(k.shear)) / mass;
     if (dampingRate > 0.0) h = std::min(h, kStepPerDampingRate / dampingRate);
     double maxSpeed = 0.0;
     const DVec3 lo = toD(settings.regionMin), hi = toD(settings.regionMax);

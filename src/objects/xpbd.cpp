@@ -197,9 +197,9 @@ void breakBendingAcrossTears(const SpringNetwork& net, XpbdConstraints& xpbd) {
   }
 }
 
-void xpbdSubstep(SpringNetwork& net, XpbdConstraints& xpbd, double h, DVec3 gravity,
+void xpbdPredict(const SpringNetwork& net, XpbdConstraints& xpbd, double h, DVec3 gravity,
                  const std::vector<DVec3>& force, std::vector<DVec3>& position,
-                 std::vector<DVec3>& velocity, std::vector<std::uint8_t>& cut) {
+                 std::vector<DVec3>& velocity) {
   for (std::size_t k = 0; k < net.count; ++k) {
     const std::size_t i = net.first + k;
     const double w = xpbd.inverseMass[k];
@@ -208,6 +208,10 @@ void xpbdSubstep(SpringNetwork& net, XpbdConstraints& xpbd, double h, DVec3 grav
     velocity[i] += (force[i] * w + gravity) * h;
     position[i] += velocity[i] * h;
   }
+}
+
+void xpbdProject(const SpringNetwork& net, XpbdConstraints& xpbd, double h,
+                 std::vector<DVec3>& position) {
   const std::size_t first = net.first;
   const std::vector<double>& w = xpbd.inverseMass;
   const double springCompliance = 1.0 / (net.stiffness * h * h);
@@ -222,6 +226,13 @@ void xpbdSubstep(SpringNetwork& net, XpbdConstraints& xpbd, double h, DVec3 grav
   for (std::size_t t = 0; t < xpbd.bending.size(); ++t)
     if (!xpbd.bendingBroken[t])
       project(bending(xpbd.bending[t], xpbd, first, position), bendingCompliance, position);
+}
+
+void xpbdFinish(SpringNetwork& net, XpbdConstraints& xpbd, double h,
+                const std::vector<DVec3>& position, std::vector<DVec3>& velocity,
+                std::vector<std::uint8_t>& cut) {
+  const std::size_t first = net.first;
+  const std::vector<double>& w = xpbd.inverseMass;
   for (std::size_t k = 0; k < net.count; ++k)
     if (w[k] > 0.0) velocity[first + k] = (position[first + k] - xpbd.previous[k]) / h;
 

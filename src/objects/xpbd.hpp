@@ -53,12 +53,18 @@ void breakBendingAcrossTears(const SpringNetwork& net, XpbdConstraints& xpbd);
 std::vector<BendingTriple> buildBendingTriples(const SpringNetwork& net,
                                                const std::vector<DVec3>& position, double shell);
 
-// One substep of the network's particles: predict with `force` (N, per particle index) and
-// gravity, project every intact constraint once in their fixed order, derive the velocities,
-// damp along each constraint, then break what is overstretched (breakOverstretched).
-// Pinned particles have infinite mass and never move.
-void xpbdSubstep(SpringNetwork& net, XpbdConstraints& xpbd, double h, DVec3 gravity,
+// One substep of the network's particles, in three parts so that the contacts between objects
+// can be projected after every network's own constraints (ObjectWorld::substep):
+// predict with `force` (N, per particle index) and gravity; project every intact constraint
+// once in their fixed order; derive the velocities, damp along each constraint, then break what
+// is overstretched (breakOverstretched). Pinned particles have infinite mass and never move.
+void xpbdPredict(const SpringNetwork& net, XpbdConstraints& xpbd, double h, DVec3 gravity,
                  const std::vector<DVec3>& force, std::vector<DVec3>& position,
-                 std::vector<DVec3>& velocity, std::vector<std::uint8_t>& cut);
+                 std::vector<DVec3>& velocity);
+void xpbdProject(const SpringNetwork& net, XpbdConstraints& xpbd, double h,
+                 std::vector<DVec3>& position);
+void xpbdFinish(SpringNetwork& net, XpbdConstraints& xpbd, double h,
+                const std::vector<DVec3>& position, std::vector<DVec3>& velocity,
+                std::vector<std::uint8_t>& cut);
 
 }  // namespace sph::objects

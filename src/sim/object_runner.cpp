@@ -3,6 +3,8 @@
 #include <cmath>
 #include <utility>
 
+#include "backend/cpu_parallel.hpp"
+
 namespace sph::sim {
 
 ObjectRunner::ObjectRunner(objects::ObjectWorld world, double rate, bool ownThread)
@@ -46,6 +48,7 @@ void ObjectRunner::wait() const {
 }
 
 void ObjectRunner::engineLoop() {
+  backend::runSeriallyOnThisThread();  // the engine is serial; beside the fluid's threads
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
     wake_.wait(lock, [this] { return busy_ || stopping_; });
