@@ -81,10 +81,9 @@ void projectContactConstraints(const ContactCoefficients& k, double h,
 
 void dampContactConstraints(const ContactCoefficients& k, double h,
                             const std::vector<double>& inverseMass,
-                            const std::vector<std::int32_t>& object,
-                            const StaticParticles& statics, const ContactConstraints& contacts,
-                            const std::vector<DVec3>& position, std::vector<DVec3>& velocity,
-                            std::vector<DVec3>& impulse) {
+                            const std::vector<std::int32_t>& object, const StaticParticles& statics,
+                            const ContactConstraints& contacts, const std::vector<DVec3>& position,
+                            std::vector<DVec3>& velocity, std::vector<DVec3>& impulse) {
   const double normalRate = h * double(k.damping);
   const double tangentRate = h * (double(k.damping) + double(k.shear));
   if (normalRate == 0.0 && tangentRate == 0.0) return;
@@ -96,7 +95,7 @@ void dampContactConstraints(const ContactCoefficients& k, double h,
     const double wa = inverseMass[c.a], wb = c.againstStatic ? 0.0 : inverseMass[c.b];
     const double w = wa + wb;
     const DVec3 vb = c.againstStatic ? still : velocity[c.b];
-    const DVec3 relative = vb - velocity[c.a];  // as the force law: v_b − v_a
+    const DVec3 relative = vb - velocity[c.a];       // as the force law: v_b − v_a
     const double closing = dot(relative, s.normal);  // > 0: b comes on at a
     const DVec3 normalPart = s.normal * closing;
     // The position solve has already parted them; a dashpot that held them together as they

@@ -57,9 +57,8 @@ void projectContactConstraints(const ContactCoefficients& k, double h,
 // velocities derived from them; adds the impulses to `impulse` by object.
 void dampContactConstraints(const ContactCoefficients& k, double h,
                             const std::vector<double>& inverseMass,
-                            const std::vector<std::int32_t>& object,
-                            const StaticParticles& statics, const ContactConstraints& contacts,
-                            const std::vector<DVec3>& position, std::vector<DVec3>& velocity,
-                            std::vector<DVec3>& impulse);
+                            const std::vector<std::int32_t>& object, const StaticParticles& statics,
+                            const ContactConstraints& contacts, const std::vector<DVec3>& position,
+                            std::vector<DVec3>& velocity, std::vector<DVec3>& impulse);
 
 }  // namespace sph::objects

@@ -359,8 +359,13 @@ void ObjectWorld::Impl::integrateRigid(const Object& object, RigidBody& body, do
 }
 
 ContactParticles ObjectWorld::Impl::contactParticles() const {
-  return {position,        velocity, published.radius,        published.object,
-          role,            toD(settings.regionMin), toD(settings.regionMax)};
+  return {position,
+          velocity,
+          published.radius,
+          published.object,
+          role,
+          toD(settings.regionMin),
+          toD(settings.regionMax)};
 }
 
 StaticParticles ObjectWorld::Impl::staticParticles() const {
@@ -411,9 +416,8 @@ void ObjectWorld::Impl::projectXpbd(double h) {
   const StaticParticles walls = staticParticles();
   if (contactsPossible) {
     findContactConstraints(contactParticles(), maxRadius, walls, contactConstraints);
-    projectContactConstraints(settings.contact, h, inverseMass, published.radius,
-                              published.object, walls, contactConstraints, position,
-                              contactImpulse);
+    projectContactConstraints(settings.contact, h, inverseMass, published.radius, published.object,
+                              walls, contactConstraints, position, contactImpulse);
   }
   for (std::size_t b = 0; b < networks.size(); ++b)
     if (models[b] == DeformableModel::Xpbd)

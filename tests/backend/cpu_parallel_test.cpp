@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <numeric>
 #include <random>
+#include <thread>
 #include <vector>
 
 namespace sph::backend {
@@ -84,6 +85,30 @@ TEST(CpuParallel, GatherPermutes) {
   std::vector<float> out(3);
   gather(in.data(), order.data(), 3, out.data());
   EXPECT_EQ(out, (std::vector<float>{30, 10, 20}));
+}
+
+// A thread beside the stepping one (the frame writer) runs the primitives on itself alone,
+// with the same results, and leaves the other threads' count as it was.
+TEST(CpuParallel, ASerialThreadRunsAloneAndChangesNoOtherThread) {
+  setThreadCount(2);
+  const int before = threadCount();
+  int inside = 0;
+  std::vector<int> visits(1000, 0);
+  double sum = 0.0;
+  std::thread beside([&] {
+    runSeriallyOnThisThread();
+    inside = threadCount();
+    forEach(visits.size(), [&](std::size_t i) { ++visits[i]; });
+    sum = reduce(
+        std::size_t(100), 0.0, [](std::size_t i) { return double(i); },
+        [](double a, double b) { return a + b; });
+  });
+  beside.join();
+  EXPECT_EQ(inside, 1);
+  EXPECT_EQ(threadCount(), before);
+  EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), 1000);
+  EXPECT_EQ(sum, 4950.0);
+  setThreadCount(0);
 }
 
 }  // namespace

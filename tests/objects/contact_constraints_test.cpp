@@ -106,8 +106,8 @@ TEST(ContactConstraints, AsConstraintsTheySqueezeAsTheForcesDo) {
 TEST(ContactConstraints, ADeformableRestsOnAFloorWithItsWeight) {
   ObjectDesc floor = box({0, -0.04, 0}, {0.06, 0.005, 0.06}, 0.005, ObjectMotion::Kinematic);
   floor.name = "floor";
-  ObjectDesc ball = sphere({0, -0.035 + 0.005 + 0.02 + 0.01, 0}, 0.02, 0.005,
-                           ObjectMotion::Deformable);
+  ObjectDesc ball =
+      sphere({0, -0.035 + 0.005 + 0.02 + 0.01, 0}, 0.02, 0.005, ObjectMotion::Deformable);
   ball.deformable.model = DeformableModel::Xpbd;
   ball.deformable.substeps = 2;
   ball.deformable.stiffness = 200.0;
