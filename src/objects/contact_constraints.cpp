@@ -27,10 +27,10 @@ DVec3 implicitDashpot(DVec3 rate, double hc, double w) {
 
 }  // namespace
 
-void findContactConstraints(const ContactParticles& p, float maxRadius,
-                            const StaticParticles& statics, ContactConstraints& contacts) {
-  contacts.touching.clear();
-  const double reachMax = 2.0 * double(maxRadius);
+void findContactCandidates(const ContactParticles& p, float maxRadius, double margin,
+                           const StaticParticles& statics, ContactConstraints& contacts) {
+  contacts.candidates.clear();
+  const double reachMax = 2.0 * double(maxRadius) + margin;
   ContactSearch& search = contacts.search;
   markNearOtherObjects(p, reachMax, search);
   search.grid.build(p.position, reachMax, search.near);
@@ -41,16 +41,27 @@ void findContactConstraints(const ContactParticles& p, float maxRadius,
       search.grid.forEachCandidate(p.position[i], reachMax, [&](std::uint32_t j) {
         if (p.object[j] == p.object[i] || p.role[j] == ContactRole::Pushed) return;
         if (p.role[j] == ContactRole::Projected && j <= i) return;
-        const double reach = double(p.radius[i]) + double(p.radius[j]);
+        const double reach = double(p.radius[i]) + double(p.radius[j]) + margin;
         if (separation(p.position[i], p.position[j]).distance < reach)
-          contacts.touching.push_back({a, j, false});
+          contacts.candidates.push_back({a, j, false});
       });
     if (statics.position.empty()) continue;
-    const double reach = double(p.radius[i]) + double(statics.radius);
+    const double reach = double(p.radius[i]) + double(statics.radius) + margin;
     statics.grid.forEachCandidate(p.position[i], reach, [&](std::uint32_t j) {
       if (separation(p.position[i], statics.position[j]).distance < reach)
-        contacts.touching.push_back({a, j, true});
+        contacts.candidates.push_back({a, j, true});
     });
+  }
+}
+
+void selectTouching(const std::vector<DVec3>& position, const std::vector<float>& radius,
+                    const StaticParticles& statics, ContactConstraints& contacts) {
+  contacts.touching.clear();
+  for (const ConstraintContact& c : contacts.candidates) {
+    const DVec3 xb = c.againstStatic ? statics.position[c.b] : position[c.b];
+    const double rb = c.againstStatic ? double(statics.radius) : double(radius[c.b]);
+    if (separation(position[c.a], xb).distance < double(radius[c.a]) + rb)
+      contacts.touching.push_back(c);
   }
 }
 

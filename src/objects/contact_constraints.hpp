@@ -27,7 +27,9 @@ struct ConstraintContact {
 
 struct ContactConstraints {
   ContactSearch search;
-  std::vector<ConstraintContact> touching;  // found by findContactConstraints, in a fixed order
+  // The pairs within reach plus a margin at the engine step's start (findContactCandidates), and
+  // of them those touching now (selectTouching), in a fixed order.
+  std::vector<ConstraintContact> candidates, touching;
 };
 
 // The walls as the constraints meet them: fixed particles of one radius.
@@ -37,11 +39,17 @@ struct StaticParticles {
   const PointGrid& grid;
 };
 
-// Lists the overlapping pairs, at the current positions, of a Projected particle with a
-// particle of another object that is not Pushed (Pushed pairs stay forces), or with a static
-// particle. Each pair once: from the lower index when both are Projected.
-void findContactConstraints(const ContactParticles& p, float maxRadius,
-                            const StaticParticles& statics, ContactConstraints& contacts);
+// Lists the pairs closer than their radii plus `margin`, at the current positions, of a
+// Projected particle with a particle of another object that is not Pushed (Pushed pairs stay
+// forces), or with a static particle. Each pair once: from the lower index when both are
+// Projected. Searched once an engine step, with a margin as far as two particles can close in
+// it, the pairs serve every substep.
+void findContactCandidates(const ContactParticles& p, float maxRadius, double margin,
+                           const StaticParticles& statics, ContactConstraints& contacts);
+
+// Keeps in `touching` the candidates that overlap at the current positions.
+void selectTouching(const std::vector<DVec3>& position, const std::vector<float>& radius,
+                    const StaticParticles& statics, ContactConstraints& contacts);
 
 // Projects each listed contact once, in order, pushing the pair apart along the line between
 // them by their inverse masses (0 where fixed), and adds the impulse of each correction to

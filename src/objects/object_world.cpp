@@ -150,6 +150,8 @@ struct ObjectWorld::Impl {
   void integrateRigid(const Object& object, RigidBody& body, double h);
   void publish();
   double stableSubstep() const;
+  double fastestInRegion() const;
+  void findContactCandidates(double dt);
 };
 
 // The volume the described shape encloses, m³.
@@ -415,7 +417,7 @@ void ObjectWorld::Impl::projectXpbd(double h) {
     if (models[b] == DeformableModel::Xpbd) xpbdProject(networks[b], xpbd[b], h, position);
   const StaticParticles walls = staticParticles();
   if (contactsPossible) {
-    findContactConstraints(contactParticles(), maxRadius, walls, contactConstraints);
+    selectTouching(position, published.radius, walls, contactConstraints);
     projectContactConstraints(settings.contact, h, inverseMass, published.radius, published.object,
                               walls, contactConstraints, position, contactImpulse);
   }
@@ -474,17 +476,30 @@ double ObjectWorld::Impl::stableSubstep() const {
       h = std::min(h, kStepPerOmega / std::sqrt(double(k.spring) / mass));
     const double dampingRate = (double(k.damping) + double(k.shear)) / mass;
     if (dampingRate > 0.0) h = std::min(h, kStepPerDampingRate / dampingRate);
-    double maxSpeed = 0.0;
-    const DVec3 lo = toD(settings.regionMin), hi = toD(settings.regionMax);
-    for (std::size_t i = 0; i < velocity.size(); ++i) {
-      const DVec3& x = position[i];
-      const bool inRegion =
-          x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z;
-      if (inRegion) maxSpeed = std::max(maxSpeed, norm(velocity[i]));
-    }
-    h = std::min(h, travelTimeStep(kMaxTravelPerRadius * double(minRadius), maxSpeed));
+    h = std::min(h, travelTimeStep(kMaxTravelPerRadius * double(minRadius), fastestInRegion()));
   }
   return h;
+}
+
+double ObjectWorld::Impl::fastestInRegion() const {
+  double fastest = 0.0;
+  const DVec3 lo = toD(settings.regionMin), hi = toD(settings.regionMax);
+  for (std::size_t i = 0; i < velocity.size(); ++i) {
+    const DVec3& x = position[i];
+    const bool inRegion =
+        x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z;
+    if (inRegion) fastest = std::max(fastest, norm(velocity[i]));
+  }
+  return fastest;
+}
+
+// Two particles at the fastest speed close by 2 v dt in the step; the margin doubles that for
+// what they gain in it, and adds a substep's travel for a pair that starts at rest.
+void ObjectWorld::Impl::findContactCandidates(double dt) {
+  if (!contactsPossible || lightestProjectedMass == std::numeric_limits<double>::infinity()) return;
+  const double margin = 4.0 * fastestInRegion() * dt + kMaxTravelPerRadius * double(minRadius);
+  sph::objects::findContactCandidates(contactParticles(), maxRadius, margin, staticParticles(),
+                                      contactConstraints);
 }
 
 ObjectWorld::ObjectWorld(const std::vector<ObjectDesc>& objects, const WorldSettings& settings)
@@ -575,6 +590,7 @@ void ObjectWorld::step(double dt, const std::vector<Vec3>& externalForce) {
   const std::size_t substeps = std::size_t(std::max(count, 1.0));
   const double start = w.time, h = dt / double(substeps);
   std::fill(w.contactImpulse.begin(), w.contactImpulse.end(), DVec3{});
+  w.findContactCandidates(dt);
   for (std::size_t s = 0; s < substeps; ++s) w.substep(h, externalForce);
   w.time = start + dt;  // no drift from summing h
   for (std::size_t o = 0; o < w.objects.size(); ++o) w.contactForce[o] = w.contactImpulse[o] / dt;
