@@ -4,11 +4,13 @@
 #include <cmath>
 #include <vector>
 
+#include "sph/core/constants.hpp"
+
 namespace sph::render {
 
 namespace {
 
-constexpr float kDegree = 3.14159265358979f / 180.0f;
+constexpr float kDegree = float(kPi / 180.0);
 
 }  // namespace
 

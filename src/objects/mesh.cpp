@@ -6,6 +6,7 @@
 #include <string>
 
 #include "objects/mesh.hpp"
+#include "sph/core/constants.hpp"
 #include "sph/error.hpp"
 
 namespace sph::objects {
@@ -345,7 +346,7 @@ bool meshContains(const TriangleMesh& mesh, Vec3 p) {
         len[0] * len[1] * len[2] + dot3(0, 1) * len[2] + dot3(0, 2) * len[1] + dot3(1, 2) * len[0];
     total += 2.0 * std::atan2(triple, denominator);
   }
-  constexpr double kFourPi = 4.0 * 3.14159265358979323846;
+  constexpr double kFourPi = 4.0 * kPi;
   // Either winding counts, so an inside-out mesh still has an inside.
   return std::abs(total / kFourPi) > 0.5;
 }

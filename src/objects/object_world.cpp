@@ -14,6 +14,7 @@
 #include "objects/shape_sampling.hpp"
 #include "objects/springs.hpp"
 #include "objects/xpbd.hpp"
+#include "sph/core/constants.hpp"
 #include "sph/core/time_step.hpp"
 #include "sph/error.hpp"
 
@@ -156,17 +157,16 @@ struct ObjectWorld::Impl {
 
 // The volume the described shape encloses, m³.
 double enclosedVolume(const ShapeDesc& shape, const BuiltShape& built) {
-  const double pi = 3.14159265358979323846;
   const double r = shape.radius;
   switch (shape.kind) {
     case ShapeKind::Box:
       return 8.0 * shape.halfExtents[0] * shape.halfExtents[1] * shape.halfExtents[2];
     case ShapeKind::Sphere:
-      return 4.0 / 3.0 * pi * r * r * r;
+      return 4.0 / 3.0 * kPi * r * r * r;
     case ShapeKind::Capsule:
-      return pi * r * r * shape.length + 4.0 / 3.0 * pi * r * r * r;
+      return kPi * r * r * shape.length + 4.0 / 3.0 * kPi * r * r * r;
     case ShapeKind::Tube:
-      return pi * r * r * shape.length;
+      return kPi * r * r * shape.length;
     case ShapeKind::Mesh:
       return std::abs(signedVolume(built.mesh));
   }

@@ -5,13 +5,12 @@
 #include <filesystem>
 #include <sstream>
 
+#include "sph/core/constants.hpp"
 #include "sph/error.hpp"
 
 namespace sph::objects {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::string describe(const Vec3d& v) {
   return "[" + formatNumber(v[0]) + ", " + formatNumber(v[1]) + ", " + formatNumber(v[2]) + "]";

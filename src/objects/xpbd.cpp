@@ -4,12 +4,14 @@
 #include <cmath>
 #include <utility>
 
+#include "sph/core/constants.hpp"
+
 namespace sph::objects {
 
 namespace {
 
 // Neighbours within 30° of opposite directions make a line that can fold at its middle.
-const double kStraightCosine = -std::cos(3.14159265358979323846 / 6.0);
+const double kStraightCosine = -std::cos(kPi / 6.0);
 
 // The index of the spring joining a and b (a < b), or springs.size() if none.
 std::size_t findSpring(const std::vector<Spring>& springs, std::uint32_t a, std::uint32_t b) {

@@ -7,13 +7,13 @@
 #include <cstdio>
 #include <string>
 
+#include "sph/core/constants.hpp"
 #include "sph/error.hpp"
 
 namespace sph::sim {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // What a particle costs a run on the CPU: the peak memory of scenes/dam_break.json at spacings
 // 0.004 and 0.003 m (62,500 and 148,137 fluid, 126,332 and 221,778 wall particles: 51 and
 // 105 MB) gives about 500 bytes a fluid particle (its state, sort keys, SIMD copies, a

@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "object_scenes.hpp"
+#include "sph/core/constants.hpp"
 #include "sph/error.hpp"
 
 namespace sph::objects {
@@ -18,8 +19,6 @@ using test::box;
 using test::settings;
 using test::sphere;
 using test::tube;
-
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(ObjectWorld, KinematicObjectFollowsItsKeyframes) {
   ObjectDesc d = box({0.2, 0.1, 0}, {0.02, 0.01, 0.01}, 0.005, ObjectMotion::Kinematic);

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "object_scenes.hpp"
+#include "sph/core/constants.hpp"
 #include "sph/error.hpp"
 
 namespace sph::objects {
@@ -20,8 +21,6 @@ using test::nearestNeighbour;
 using test::settings;
 using test::sphere;
 using test::tube;
-
-constexpr double kPi = 3.14159265358979323846;
 
 void expectUnitOutwardNormals(const ParticleState& p, Vec3 centre) {
   for (std::size_t i = 0; i < p.size(); ++i) {

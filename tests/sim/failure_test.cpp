@@ -7,6 +7,7 @@
 
 #include "scene_builders.hpp"
 #include "sim/scene_size.hpp"
+#include "sph/core/constants.hpp"
 #include "sph/error.hpp"
 #include "sph/simulation.hpp"
 
@@ -83,7 +84,7 @@ TEST(Failure, ASceneLargerThanTheMachineIsRefusedBeforeAnythingIsMade) {
   pumped.time.duration = 1.0;
   const double before = sim::estimateSize(testing::restingTank(0.01, 0.1, 0.1)).fluidParticles;
   const double emitted = sim::estimateSize(pumped).fluidParticles - before;
-  EXPECT_NEAR(emitted, 3.14159265 * 25.0 * 100.0, 1.0);  // (π 5²) a layer, 100 layers
+  EXPECT_NEAR(emitted, kPi * 25.0 * 100.0, 1.0);  // (π 5²) a layer, 100 layers
   pumped.time.duration = 1e6;
   const AxisBox& domain = pumped.domain.box;
   double domainCells = 1.0;

@@ -18,13 +18,13 @@
 #include "backends.hpp"
 #include "sim/sampling.hpp"
 #include "sim/walls.hpp"
+#include "sph/core/constants.hpp"
 #include "sph/error.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kSpacing = 0.01;
 
 struct P {

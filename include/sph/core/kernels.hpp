@@ -8,12 +8,11 @@
 // Coefficients are computed once on the host (`make`) and passed by value to the device.
 #pragma once
 
+#include "sph/core/constants.hpp"
 #include "sph/core/select.hpp"
 #include "sph/core/vec.hpp"
 
 namespace sph {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Müller et al. 2003 (the default of both Meteer 2011 and the 2021 CUDA SPH tutorial): poly6
 // for W, spiky gradient for pressure, the viscosity kernel's Laplacian for viscosity.
