@@ -3,10 +3,20 @@
 #pragma once
 
 #include <cstdint>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace sph {
+
+// A number as the messages show it: up to 12 significant digits, so that what a user wrote
+// (0.001, 1e-300) comes back as written.
+inline std::string formatNumber(double value) {
+  std::ostringstream out;
+  out.precision(12);
+  out << value;
+  return out.str();
+}
 
 // Bad input: the message names the file, the key and what was expected.
 class InputError : public std::runtime_error {

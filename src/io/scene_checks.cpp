@@ -1,4 +1,5 @@
 #include "io/scene_checks.hpp"
+#include "sph/error.hpp"
 
 #include <cmath>
 #include <utility>

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "io/scene_checks.hpp"
+#include "sph/error.hpp"
 
 namespace sph::io {
 namespace {

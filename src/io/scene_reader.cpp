@@ -21,13 +21,6 @@ std::string describeValue(const json& value) {
   return text;
 }
 
-std::string formatNumber(double value) {
-  std::ostringstream out;
-  out.precision(12);
-  out << value;
-  return out.str();
-}
-
 std::string formatVec3(const Vec3d& v) {
   return "[" + formatNumber(v[0]) + ", " + formatNumber(v[1]) + ", " + formatNumber(v[2]) + "]";
 }

@@ -18,7 +18,6 @@ namespace sph::io {
 
 // A JSON value as a message quotes it, shortened if long.
 std::string describeValue(const nlohmann::json& value);
-std::string formatNumber(double value);
 std::string formatVec3(const Vec3d& v);
 
 class ReadContext {

@@ -294,12 +294,6 @@ double distanceToSegment(DVec3 p, DVec3 c, DVec3 axis, double h, double* axial) 
 
 }  // namespace
 
-std::string formatNumber(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 ShapeDesc insetShape(const ShapeDesc& shape, double inset, const std::string& where) {
   ShapeDesc placed = shape;
   if (!(inset > 0.0)) return placed;

@@ -45,7 +45,4 @@ ShapeSamples sampleShape(const ShapeDesc& shape, double spacing, double inset,
 // Throws InputError naming the key when the shape is not thicker than that.
 ShapeDesc insetShape(const ShapeDesc& shape, double inset, const std::string& where);
 
-// "0.25", "-1" — how numbers read in error messages.
-std::string formatNumber(double value);
-
 }  // namespace sph::objects

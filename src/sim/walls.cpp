@@ -183,7 +183,7 @@ Sampled sampleMesh(const WallContext& c, const WallDesc& w) {
   }
   if (out.points.empty())
     c.fail("file",
-           file.string() + " gives no particles at spacing " + objects::formatNumber(c.spacing));
+           file.string() + " gives no particles at spacing " + formatNumber(c.spacing));
   if (closed) {
     // Normals out of the enclosed volume put the fluid outside it, and the inside is solid.
     const bool fluidOutside = objects::signedVolume(mesh) > 0.0;
