@@ -122,8 +122,8 @@ struct ObjectWorld::Impl {
 
   // Stability data, fixed at build time.
   bool contactsPossible = false;
-  double fastestSpringOmega = 0.0;    // rad/s
-  double fastestSpringDamping = 0.0;  // c / m_reduced, 1/s
+  double shortestSpringStep = std::numeric_limits<double>::infinity();  // 1/ω, s
+  double fastestSpringDamping = 0.0;                                    // c / m_reduced, 1/s
   // What a contact force pushes against: a whole rigid body (its mass as felt at its outermost
   // particle), one free particle of a spring network; and one free particle of an XPBD
   // deformable, which meets pushed particles by forces too.
@@ -314,7 +314,8 @@ void ObjectWorld::Impl::makeDeformable(const ObjectDesc& desc, Object& object,
     breakBendingAcrossTears(net, constraints);  // those across the cuts
     xpbdSubsteps = std::max(xpbdSubsteps, d.substeps);
   } else if (!net.springs.empty()) {
-    fastestSpringOmega = std::max(fastestSpringOmega, std::sqrt(net.stiffness / reducedMass));
+    shortestSpringStep =
+        std::min(shortestSpringStep, springTimeStep(reducedMass, net.stiffness, 1.0));
     fastestSpringDamping = std::max(fastestSpringDamping, net.damping / reducedMass);
   }
   object.body = networks.size();
@@ -461,8 +462,8 @@ void ObjectWorld::Impl::publish() {
 
 double ObjectWorld::Impl::stableSubstep() const {
   double h = std::numeric_limits<double>::infinity();
-  if (fastestSpringOmega > 0.0) {
-    h = std::min(h, kStepPerOmega / fastestSpringOmega);
+  if (shortestSpringStep < std::numeric_limits<double>::infinity()) {
+    h = std::min(h, kStepPerOmega * shortestSpringStep);
     if (fastestSpringDamping > 0.0) h = std::min(h, kStepPerDampingRate / fastestSpringDamping);
   }
   if (contactsPossible) {
@@ -473,7 +474,7 @@ double ObjectWorld::Impl::stableSubstep() const {
                             : std::numeric_limits<double>::infinity();
     const ContactCoefficients& k = settings.contact;
     if (k.spring > 0.0f && mass < std::numeric_limits<double>::infinity())
-      h = std::min(h, kStepPerOmega / std::sqrt(double(k.spring) / mass));
+      h = std::min(h, kStepPerOmega * springTimeStep(mass, double(k.spring), 1.0));
     const double dampingRate = (double(k.damping) + double(k.shear)) / mass;
     if (dampingRate > 0.0) h = std::min(h, kStepPerDampingRate / dampingRate);
     h = std::min(h, travelTimeStep(kMaxTravelPerRadius * double(minRadius), fastestInRegion()));

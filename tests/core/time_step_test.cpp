@@ -27,5 +27,38 @@ TEST(TimeStep, FlowStepFollowsTheFastestParticle) {
   EXPECT_LT(cflTimeStep(0.4, 0.02, 20.0, 2.0), 0.1 * flowTimeStep(0.4, 0.02, 2.0));
 }
 
+// Sound and flow together cross exactly cfl·h in the step, whatever h and the speeds.
+TEST(TimeStep, CflStepLetsSoundCrossAFractionOfH) {
+  for (double h : {0.004, 0.02})
+    for (double c : {5.0, 20.0})
+      for (double v : {0.0, 2.0}) {
+        const double dt = cflTimeStep(0.4, h, c, v);
+        EXPECT_NEAR((c + v) * dt, 0.4 * h, 1e-15) << "h " << h << " c " << c << " v " << v;
+      }
+  EXPECT_GT(cflTimeStep(0.4, 0.02, 20.0, 0.0), cflTimeStep(0.4, 0.02, 20.0, 2.0));
+}
+
+// Starting from rest under its largest acceleration a, a particle moves a dt² / 2 in the step:
+// factor² / 2 of h. Without acceleration, no bound.
+TEST(TimeStep, ForceStepKeepsAnAcceleratedParticleWithinAFractionOfH) {
+  const double h = 0.02, factor = 0.25;
+  for (double a : {9.81, 1000.0}) {
+    const double dt = forceTimeStep(factor, h, a);
+    EXPECT_NEAR(0.5 * a * dt * dt, 0.5 * factor * factor * h, 1e-15) << "a " << a;
+  }
+  EXPECT_EQ(forceTimeStep(factor, h, 0.0), HUGE_VAL);
+}
+
+// Explicit diffusion over the step spreads momentum by sqrt(ν dt) = sqrt(factor) h: ν dt / h² is
+// the factor. An inviscid fluid has no bound.
+TEST(TimeStep, ViscousStepHoldsTheDiffusionNumber) {
+  const double h = 0.002, factor = 0.125;
+  for (double nu : {1e-6, 1e-3}) {
+    const double dt = viscousTimeStep(factor, h, nu);
+    EXPECT_NEAR(nu * dt / (h * h), factor, 1e-12) << "nu " << nu;
+  }
+  EXPECT_EQ(viscousTimeStep(factor, h, 0.0), HUGE_VAL);
+}
+
 }  // namespace
 }  // namespace sph
