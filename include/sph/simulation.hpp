@@ -93,6 +93,9 @@ struct SimulationOptions {
   // grid's cells instead, slower and with the same physics. 0: room for twice the neighbours
   // of the initial lattice.
   std::uint32_t neighborListLength = 0;
+  // CPU threads for the simulation's passes, at most 1024; 0: the calling thread's OpenMP
+  // setting (every hardware thread unless the program set it). Results do not depend on it.
+  int threads = 0;
 };
 
 // A frame and its statistics taken at one instant (Simulation::capture) and assembled later,

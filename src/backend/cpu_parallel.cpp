@@ -36,6 +36,14 @@ void runSeriallyOnThisThread() {
 #endif
 }
 
+ScopedThreadCount::ScopedThreadCount(int n) : previous_(n > 0 ? threadCount() : 0) {
+  if (n > 0) setThreadCount(n);
+}
+
+ScopedThreadCount::~ScopedThreadCount() {
+  if (previous_ > 0) setThreadCount(previous_);
+}
+
 std::uint32_t exclusiveScan(std::uint32_t* data, std::size_t n) {
   std::uint32_t sum = 0;
   for (std::size_t i = 0; i < n; ++i) {

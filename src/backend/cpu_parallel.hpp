@@ -21,6 +21,19 @@ void setThreadCount(int n);  // n ≤ 0: all hardware threads
 // briefly; a 2-thread run of the artery stepped at half speed so.
 void runSeriallyOnThisThread();
 
+// For its lifetime, the calling thread's primitives use `n` threads (n ≤ 0: as they were). The
+// results of a step do not depend on the count, only its speed.
+class ScopedThreadCount {
+ public:
+  explicit ScopedThreadCount(int n);
+  ~ScopedThreadCount();
+  ScopedThreadCount(const ScopedThreadCount&) = delete;
+  ScopedThreadCount& operator=(const ScopedThreadCount&) = delete;
+
+ private:
+  int previous_;
+};
+
 // Throws std::runtime_error when this CPU lacks the instruction set the library was compiled
 // for (SPH_CPU_ARCH), instead of dying on an illegal instruction in a pass.
 void requireCompiledInstructionSet();

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "backend/cpu_parallel.hpp"
 #include "sim/simulation_impl.hpp"
 
 namespace sph {
@@ -17,6 +18,7 @@ Simulation::~Simulation() = default;
 // density at rest; the weakly compressible one does neither, its pressure is in the forces.
 void Simulation::step(double until) {
   Impl& s = *impl_;
+  const backend::ScopedThreadCount passThreads(s.threads);
   sim::FluidEngine& engine = *s.engine;
   StepProfile& profile = s.profile;
   using detail::timedMs;

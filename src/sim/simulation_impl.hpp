@@ -49,6 +49,7 @@ struct Simulation::Impl {
   double time = 0.0;
   double dt = 0.0;
   std::uint64_t steps = 0;
+  int threads = 0;  // SimulationOptions::threads
   std::uint64_t removed = 0;
   std::uint64_t clamped = 0;
   std::uint64_t initialFluid = 0;
@@ -91,7 +92,9 @@ struct Simulation::Impl {
     std::uint64_t unconvergedSolves = 0;
   } solverTotals;
 
-  Impl(const Scene& s, const SimulationOptions& options) : scene(s), emitters(s) {
+  Impl(const Scene& s, const SimulationOptions& options)
+      : scene(s), threads(checkedThreads(options.threads)), emitters(s) {
+    const backend::ScopedThreadCount passThreads(threads);
     backend::requireCompiledInstructionSet();
     sim::refuseIfTooLarge(scene, sim::availableBytes());  // before anything large is made
     calibration = sim::calibrate(scene);
@@ -281,6 +284,16 @@ struct Simulation::Impl {
 
   // Time, counts, leaks and objects: the statistics that need no copy of the fluid.
   FrameStats statsWithoutParticles(const Simulation& sim) const;
+
+  static int checkedThreads(int threads) {
+    if (threads < 0 || threads > kMaxThreads)
+      throw std::invalid_argument(
+          "SimulationOptions::threads: expected 0 (the caller's setting) "
+          "to " +
+          std::to_string(kMaxThreads) + ", got " + std::to_string(threads));
+    return threads;
+  }
+  static constexpr int kMaxThreads = 1024;
 
   static bool useCuda(const SimulationOptions& options) {
     if (options.backend == Backend::Cuda) return true;

@@ -2,7 +2,9 @@
 // reductions make the trajectories independent of the thread count as well.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "backend/cpu_parallel.hpp"
 #include "backends.hpp"
@@ -40,6 +42,29 @@ TEST(Determinism, SameThreadCountSameBytes) {
 
 TEST(Determinism, OneAndTwoThreadsAgree) {
   expectIdentical(runFor(1, 200), runFor(2, 200));
+}
+
+// The same through the library's option: its steps use the threads asked for, and leave the
+// caller's own setting as it was.
+TEST(Determinism, TheThreadsOptionGivesTheSameBytesAndKeepsTheCallersSetting) {
+  Scene scene = testing::restingTank(0.01, 0.1, 0.1);
+  scene.fluid.blocks[0].box.min[1] = 0.05;
+  scene.fluid.blocks[0].box.max[1] = 0.15;
+  backend::setThreadCount(2);
+  std::vector<ParticleFrame> frames;
+  for (int threads : {1, 2}) {
+    SimulationOptions options;
+    options.threads = threads;
+    Simulation sim(scene, options);
+    for (int i = 0; i < 100; ++i) sim.step();
+    EXPECT_EQ(backend::threadCount(), 2);
+    frames.push_back(sim.frame());
+  }
+  expectIdentical(frames[0], frames[1]);
+  backend::setThreadCount(0);
+  SimulationOptions tooMany;
+  tooMany.threads = 100000;
+  EXPECT_THROW(Simulation(scene, tooMany), std::invalid_argument);
 }
 
 // With objects: `scene` from `start` (once its clamp moves) for `steps` more steps on `threads`.
