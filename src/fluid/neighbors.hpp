@@ -37,6 +37,37 @@ SPH_HD void forEachNeighbor(const GridSpec& grid, const std::uint32_t* cellStart
   });
 }
 
+// The same, over only the cells the ball (p, radius) touches: with a radius under the cell's
+// size, 8 to 27 of them, and rows of 2 or 3 cells. For searches of a reach shorter than the
+// grid's cell (an object particle's contact reach in the fluid's grid of cell h). The radius is
+// padded by a few parts in a million so that rounding never leaves out a cell within reach.
+template <class VisitRange>
+SPH_HD void forEachNeighborRangeWithin(const GridSpec& grid, const std::uint32_t* cellStart, Vec3 p,
+                                       float radius, VisitRange&& visitRange) {
+  const float padded = radius * 1.00001f;
+  const Int3 lo = cellCoordinate(grid, p - Vec3{padded, padded, padded});
+  const Int3 hi = cellCoordinate(grid, p + Vec3{padded, padded, padded});
+  if (hi.x < 0 || hi.y < 0 || hi.z < 0 || lo.x >= grid.dims.x || lo.y >= grid.dims.y ||
+      lo.z >= grid.dims.z)
+    return;
+  const Int3 first = clampToGrid(grid, lo), last = clampToGrid(grid, hi);
+  for (int z = first.z; z <= last.z; ++z)
+    for (int y = first.y; y <= last.y; ++y) {
+      const std::uint32_t begin = readOnly(cellStart + cellIndex(grid, Int3{first.x, y, z}));
+      const std::uint32_t end = readOnly(cellStart + cellIndex(grid, Int3{last.x, y, z}) + 1);
+      visitRange(begin, end);
+    }
+}
+
+template <class Visit>
+SPH_HD void forEachNeighborWithin(const GridSpec& grid, const std::uint32_t* cellStart, Vec3 p,
+                                  float radius, Visit&& visit) {
+  forEachNeighborRangeWithin(grid, cellStart, p, radius,
+                             [&](std::uint32_t begin, std::uint32_t end) {
+                               for (std::uint32_t j = begin; j < end; ++j) visit(j);
+                             });
+}
+
 // The fluid neighbours the density pass listed, as the passes after it read them; the cells
 // for a particle that had too many to list.
 struct NeighborLists {

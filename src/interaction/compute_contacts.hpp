@@ -88,23 +88,24 @@ std::size_t computeContacts(fluid::FluidParticles<B>& fluid, const fluid::Grid<B
         int sideCount = 0;
         if (fluid::nearGrid(objectGrid, xi)) {
           const Vec3 vi = xyz(velocity[i]);
-          fluid::forEachNeighbor(objectGrid, objectCellStart, xi, [&](std::uint32_t o) {
-            const Vec4 xo = readOnly(objectPosition + o);
-            const Vec4 vo = readOnly(objectVelocity + o);
-            if (!p.boundary) force += detail::fluidContactForce(p, xi, vi, xo, vo);
-            const Vec4 no = readOnly(objectNormal + o);
-            // Torn particles (w of the velocity) have no surface to be on a side of.
-            if (container >= 0 && int(no.w) == container && vo.w == 0.0f) {
-              const Vec3 offset = xi - xyz(xo);
-              const float r2 = lengthSquared(offset);
-              if (r2 < reach2) {
-                const float w = (reach2 - r2) * (reach2 - r2);
-                sideSum += w * dot(offset, xyz(no));
-                weightSum += w;
-                ++sideCount;
-              }
-            }
-          });
+          fluid::forEachNeighborWithin(
+              objectGrid, objectCellStart, xi, objectGrid.cellSize, [&](std::uint32_t o) {
+                const Vec4 xo = readOnly(objectPosition + o);
+                const Vec4 vo = readOnly(objectVelocity + o);
+                if (!p.boundary) force += detail::fluidContactForce(p, xi, vi, xo, vo);
+                const Vec4 no = readOnly(objectNormal + o);
+                // Torn particles (w of the velocity) have no surface to be on a side of.
+                if (container >= 0 && int(no.w) == container && vo.w == 0.0f) {
+                  const Vec3 offset = xi - xyz(xo);
+                  const float r2 = lengthSquared(offset);
+                  if (r2 < reach2) {
+                    const float w = (reach2 - r2) * (reach2 - r2);
+                    sideSum += w * dot(offset, xyz(no));
+                    weightSum += w;
+                    ++sideCount;
+                  }
+                }
+              });
         }
         const Vec3 a = detail::clampLength(xyz(ai) + force * inverseMass, p.maxAcceleration);
         acceleration[i] = makeVec4(a, ai.w);
@@ -135,7 +136,7 @@ std::size_t computeContacts(fluid::FluidParticles<B>& fluid, const fluid::Grid<B
         float touching = 0.0f;
         if (!p.boundary && fluid::nearGrid(spec, xyz(xo))) {
           const float reach = contactReach(p, xo.w);
-          fluid::forEachNeighbor(spec, fluidCellStart, xyz(xo), [&](std::uint32_t j) {
+          fluid::forEachNeighborWithin(spec, fluidCellStart, xyz(xo), reach, [&](std::uint32_t j) {
             const Vec3 xj = xyz(readOnly(position + j));
             if (lengthSquared(xj - xyz(xo)) >= reach * reach) return;
             force -= detail::fluidContactForce(p, xj, xyz(readOnly(velocity + j)), xo, vo);
