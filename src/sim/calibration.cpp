@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "sim/sampling.hpp"
+#include "sph/core/contact.hpp"
 #include "sph/core/eos.hpp"
 #include "sph/core/kernels.hpp"
 #include "sph/core/time_step.hpp"
@@ -113,7 +114,7 @@ void calibrateContact(const Scene& scene, Calibration& out) {
   const InteractionDesc& i = scene.interaction;
   out.objectsAsBoundary = i.coupling == ObjectCoupling::Boundary;
   const double cflDt = scene.time.cfl * out.supportRadius / out.soundSpeed;
-  const double peak = std::exp(i.distanceExponent);
+  const double peak = distanceFunctionPeak(i.distanceExponent);
   out.contactStiffnessFromScene = i.stiffness.has_value();
   out.contactStiffness = i.stiffness ? *i.stiffness : out.mass / (cflDt * cflDt * peak);
   out.contactDampingFromScene = i.damping.has_value();
@@ -150,7 +151,8 @@ objects::WorldSettings worldSettings(const Scene& scene, const Calibration& c) {
   w.gravity = Vec3{static_cast<float>(scene.gravity[0]), static_cast<float>(scene.gravity[1]),
                    static_cast<float>(scene.gravity[2])};
   w.defaultSpacing = static_cast<float>(c.spacing);
-  const double spring = c.contactStiffness * std::exp(scene.interaction.distanceExponent);
+  const double spring =
+      c.contactStiffness * distanceFunctionPeak(scene.interaction.distanceExponent);
   w.contact = ContactCoefficients{static_cast<float>(spring),
                                   static_cast<float>(std::sqrt(spring * c.mass)), 0.0f};
   const AxisBox& domain = scene.domain.box;

@@ -20,6 +20,7 @@
 #include "sim/sampling.hpp"
 #include "sim/scene_size.hpp"
 #include "sim/walls.hpp"
+#include "sph/core/contact.hpp"
 #include "sph/core/kernels.hpp"
 #include "sph/core/time_step.hpp"
 #include "sph/devices.hpp"
@@ -431,7 +432,7 @@ struct Simulation::Impl {
     if (interactionParams.boundary) return travel;  // no contact springs
     // The stiffest contact is at the centre of the influence sphere, where φ = e^β.
     const double contact = springTimeStep(calibration.mass, calibration.contactStiffness,
-                                          std::exp(scene.interaction.distanceExponent));
+                                          distanceFunctionPeak(scene.interaction.distanceExponent));
     return std::min(contact, travel);
   }
 

@@ -70,6 +70,9 @@ TEST(DistanceFunction, TableFollowsTheExponentialAndRisesInward) {
     const DistanceFunctionTable table = DistanceFunctionTable::make(beta);
     EXPECT_FLOAT_EQ(table(1.0f), 1.0f);
     EXPECT_NEAR(table(0.0f), std::exp(beta), 1e-4 * std::exp(beta));
+    // The peak the calibration and the step bound use is the table's largest value.
+    EXPECT_EQ(distanceFunctionPeak(beta), std::exp(beta));
+    EXPECT_NEAR(table(0.0f), distanceFunctionPeak(beta), 1e-4 * distanceFunctionPeak(beta));
     float previous = table(1.0f);
     for (int k = 999; k >= 0; --k) {
       const float q = float(k) / 1000.0f;

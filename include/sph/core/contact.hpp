@@ -47,6 +47,11 @@ inline double distanceFunction(double exponent, double q) {
   return std::exp(exponent * (1.0 - q));
 }
 
+// The largest φ, e^β, at the centre of the influence sphere: where the contact is stiffest.
+inline double distanceFunctionPeak(double exponent) {
+  return distanceFunction(exponent, 0.0);
+}
+
 inline DistanceFunctionTable DistanceFunctionTable::make(double exponent) {
   DistanceFunctionTable table{};
   for (int k = 0; k <= kSize; ++k)
