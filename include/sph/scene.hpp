@@ -250,7 +250,10 @@ struct DeformableDesc {
   double stiffness = 0.0;       // N/m per spring; 0: derived (object engine)
   double damping = 0.0;         // N·s/m along each spring; 0: derived (critical over a spring)
   double breakingStrain = 0.0;  // a spring breaks past |l - l0| / l0; 0: never
-  double springReach = 1.5;     // × the object's spacing
+  double springReach = 1.5;     // × the object's spacing, in (1, kMaxSpringReach]
+  // The loader's and the object engine's one limit: past three spacings a solid's springs per
+  // particle grow as the reach's cube, to about a hundred.
+  static constexpr double kMaxSpringReach = 3.0;
   std::vector<AxisBox> pinned;  // particles inside these boxes are fixed
   std::vector<AxisBox> cuts;    // springs that pass through these start broken (a slit)
   DeformableModel model = DeformableModel::Springs;

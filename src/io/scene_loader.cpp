@@ -189,7 +189,8 @@ DeformableDesc readDeformable(const ObjectReader& in) {
   d.stiffness = in.number("stiffness", d.stiffness, kNonNegative);
   d.damping = in.number("damping", d.damping, kNonNegative);
   d.breakingStrain = in.number("breaking_strain", d.breakingStrain, kNonNegative);
-  d.springReach = in.number("spring_reach", d.springReach, NumberRule{1, 3, false, false});
+  d.springReach = in.number("spring_reach", d.springReach,
+                            NumberRule{1, DeformableDesc::kMaxSpringReach, true, false});
   d.pinned = readBoxes(in, "pinned");
   d.cuts = readBoxes(in, "cuts");
   d.model = in.choice("model", d.model, kDeformableModelNames);

@@ -267,8 +267,9 @@ void ObjectWorld::Impl::makeDeformable(const ObjectDesc& desc, Object& object,
   requireNonNegative(d.stiffness, where, "deformable.stiffness");
   requireNonNegative(d.damping, where, "deformable.damping");
   requireNonNegative(d.breakingStrain, where, "deformable.breaking_strain");
-  if (!(d.springReach > 1.0) || !std::isfinite(d.springReach))
-    throw InputError(where + ".deformable.spring_reach: expected a number > 1 (× spacing), got " +
+  if (!(d.springReach > 1.0 && d.springReach <= DeformableDesc::kMaxSpringReach))
+    throw InputError(where + ".deformable.spring_reach: expected a number in (1, " +
+                     formatNumber(DeformableDesc::kMaxSpringReach) + "] (× spacing), got " +
                      formatNumber(d.springReach));
   requireNonNegative(d.bendingStiffness, where, "deformable.bending_stiffness");
   if (d.substeps < 1)

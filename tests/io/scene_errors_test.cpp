@@ -125,6 +125,8 @@ TEST(SceneErrors, ValuesOutOfRange) {
       {"/walls/0/closed", "no", "walls[0].closed: expected true or false"},
       {"/objects/0/deformable/model", "fem",
        "objects[0].deformable.model: expected one of \"springs\", \"xpbd\", got \"fem\""},
+      {"/objects/0/deformable/spring_reach", 1,
+       "objects[0].deformable.spring_reach: expected a number in (1, 3], got 1"},
       {"/objects/0/deformable/substeps", 0,
        "objects[0].deformable.substeps: expected an integer in [1, 1000], got 0"},
       {"/objects/0/deformable/substeps", 2.5,

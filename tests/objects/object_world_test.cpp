@@ -289,8 +289,13 @@ TEST(ObjectWorld, ImpossibleGeometryIsAnInputErrorNamingTheKey) {
   layers.shape.layers = 0;
   EXPECT_NE(errorOf(layers).find("objects[1].shape.layers"), std::string::npos);
   ObjectDesc reach = tube({0, 0, 0}, 0.02, 0.1, 0.01);
-  reach.deformable.springReach = 0.9;
-  EXPECT_NE(errorOf(reach).find("objects[1].deformable.spring_reach"), std::string::npos);
+  for (double bad : {0.9, 1.0, 3.5}) {
+    reach.deformable.springReach = bad;
+    EXPECT_NE(
+        errorOf(reach).find("objects[1].deformable.spring_reach: expected a number in (1, 3]"),
+        std::string::npos)
+        << bad;
+  }
   ObjectDesc keys = box({0, 0, 0}, {0.1, 0.1, 0.1}, 0.01, ObjectMotion::Kinematic);
   keys.keyframes = {{0.5, {}, {}}, {0.5, {}, {}}};
   EXPECT_NE(errorOf(keys).find("objects[1].keyframes[1].time"), std::string::npos);
