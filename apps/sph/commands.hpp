@@ -26,7 +26,9 @@ struct RunOptions {
   std::vector<std::string> overrides;
   bool force = false;
   bool quiet = false;
-  bool render = false;  // then `sph render` the run's directory with its defaults
+  bool render = false;           // then `sph render` the run's directory with its defaults
+  double checkpointEvery = 0.0;  // simulated seconds between checkpoints; 0: none
+  std::string resume;            // a run's directory to continue from its newest checkpoint
 };
 
 struct RenderOptions {

@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   RunOptions run;
   std::string duration, fps, format;
   auto* runCmd = app.add_subcommand("run", "Simulate a scene and write frames and statistics");
-  runCmd->add_option("scene", run.scene, "Scene file (JSON)")->required();
+  runCmd->add_option("scene", run.scene, "Scene file (JSON); not with --resume");
   runCmd->add_option("--out", run.out, "Output directory (default: out/<scene name>)");
   runCmd->add_option("--backend", run.backend, "cpu, cuda or auto")
       ->check(CLI::IsMember({"cpu", "cuda", "auto"}));
@@ -33,6 +33,14 @@ int main(int argc, char** argv) {
   runCmd->add_option("--set", run.overrides, "Override a scene key: dotted.key=value")->take_all();
   runCmd->add_flag("--force", run.force, "Overwrite an earlier run in the output directory");
   runCmd->add_flag("--quiet", run.quiet, "No progress output");
+  runCmd
+      ->add_option("--checkpoint-every", run.checkpointEvery,
+                   "Save the whole state every T simulated seconds (at the first frame past), and "
+                   "at the end, into DIR/checkpoints/ (the last two kept)")
+      ->check(CLI::PositiveNumber);
+  runCmd->add_option("--resume", run.resume,
+                     "Continue the run in DIR from its newest checkpoint (a longer --duration "
+                     "extends it)");
   runCmd->add_flag("--render", run.render,
                    "Then render the run: DIR/images/*.png and DIR/video.mp4 (as sph render)");
 
@@ -130,6 +138,21 @@ int main(int argc, char** argv) {
 
   auto dispatch = [&]() -> int {
     if (*runCmd) {
+      if (!run.resume.empty()) {
+        // A resumed run continues its own scene and outputs: only its end may move.
+        if (!run.scene.empty() || !run.overrides.empty() || !fps.empty() || !format.empty() ||
+            !run.out.empty() || run.force) {
+          std::fprintf(stderr,
+                       "error: --resume %s: continues the run's own scene into its own directory; "
+                       "a scene file, --set, --fps, --format, --out and --force cannot go with "
+                       "it (--duration, --threads, --checkpoint-every, --quiet and --render can)\n",
+                       run.resume.c_str());
+          return static_cast<int>(kExitBadInput);
+        }
+      } else if (run.scene.empty()) {
+        std::fprintf(stderr, "error: run: expected a scene file (or --resume DIR)\n");
+        return static_cast<int>(kExitBadInput);
+      }
       if (!duration.empty()) run.overrides.push_back("time.duration=" + duration);
       if (!fps.empty()) run.overrides.push_back("output.fps=" + fps);
       if (!format.empty()) run.overrides.push_back("output.format=" + format);

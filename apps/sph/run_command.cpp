@@ -5,8 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <sstream>
 
 #include "backend/cpu_parallel.hpp"
+#include "checkpoint.hpp"
 #include "commands.hpp"
 #include "io/frame_writer.hpp"
 #include "io/scene_loader.hpp"
@@ -29,10 +32,14 @@ double secondsSince(Clock::time_point start) {
 struct RunRecord {
   nlohmann::json failure;  // null when the run completed
   double wallSeconds = 0.0;
+  std::uint64_t firstStep = 0;  // the step this process started from (a resumed run's)
+  nlohmann::json resumedFrom;   // the checkpoint, or null
 };
 
-void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecord& record) {
-  const double steps = double(sim.stepCount());
+void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecord& record,
+                  double startTime) {
+  const double simulatedHere = sim.time() - startTime;
+  const double steps = double(sim.stepCount() - record.firstStep);
   nlohmann::json summary = {
       {"status", record.failure.is_null()                           ? "completed"
                  : record.failure.value("quantity", "") == "output" ? "output failed"
@@ -48,7 +55,8 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
       {"format", formatName(sim.scene().output.format)},
       {"wall_seconds", record.wallSeconds},
       {"ms_per_step", steps > 0 ? 1000.0 * record.wallSeconds / steps : 0.0},
-      {"real_time_factor", record.wallSeconds > 0 ? sim.time() / record.wallSeconds : 0.0},
+      {"real_time_factor", record.wallSeconds > 0 ? simulatedHere / record.wallSeconds : 0.0},
+      {"resumed_from", record.resumedFrom},
       {"removed_count", sim.removedCount()},
       {"clamped_count", sim.clampedCount()},
       {"leaked_count", sim.leakedCount()},
@@ -62,20 +70,57 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
                           [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
 }
 
+// A resumed run's scene is the one its checkpoint holds, its end time moved by --duration.
+Scene sceneOf(const RunOptions& options, const std::optional<Checkpoint>& resumed) {
+  if (!resumed) return io::loadScene(options.scene, options.overrides);
+  Scene scene = io::parseScene(resumed->scene, resumed->sceneFile, options.overrides);
+  const double at = resumed->time;
+  if (scene.time.duration <= at)
+    throw InputError(resumed->file.string() + ": time.duration: the run already reached t = " +
+                     formatNumber(at) + " s; expected a longer --duration to extend it");
+  return scene;
+}
+
 }  // namespace
 
 int runCommand(const RunOptions& options) {
   backend::setThreadCount(options.threads);
-  const Scene scene = io::loadScene(options.scene, options.overrides);
+  std::optional<Checkpoint> resumed;
+  if (!options.resume.empty()) resumed = readLatestCheckpoint(options.resume);
+  const Scene scene = sceneOf(options, resumed);
   // A scene without a name writes under its file's name; the loader keeps names to one path
   // component, so the run stays inside out/.
   const std::string name =
       scene.name.empty() ? std::filesystem::path(options.scene).stem().string() : scene.name;
-  const std::string dir = options.out.empty() ? "out/" + name : options.out;
+  const std::string dir = resumed               ? options.resume
+                          : options.out.empty() ? "out/" + name
+                                                : options.out;
   Simulation sim(scene, simulationOptions(options.backend, options.device));
+  if (resumed) {
+    std::istringstream state(resumed->state);
+    try {
+      sim.loadState(state);
+    } catch (const InputError& e) {
+      throw InputError(resumed->file.string() + ": " + e.what());
+    }
+  }
+  const double startTime = sim.time();
   std::vector<std::string> objectNames;
   for (const ObjectDesc& object : scene.objects) objectNames.push_back(object.name);
-  RunOutput output(dir, scene.output.format, options.force, objectNames);
+  std::optional<RunOutput> outputs;
+  if (resumed)
+    outputs.emplace(dir, scene.output.format, objectNames, resumed->position, sim.stats());
+  else
+    outputs.emplace(dir, scene.output.format, options.force, objectNames);
+  RunOutput& output = *outputs;
+  // Checkpoints go on at the resumed run's interval unless asked otherwise.
+  const double checkpointEvery = options.checkpointEvery > 0.0 ? options.checkpointEvery
+                                 : resumed                     ? resumed->checkpointEvery
+                                                               : 0.0;
+  if (checkpointEvery > 0.0 && !scene.objects.empty())
+    throw InputError(scene.sourcePath +
+                     ": objects: --checkpoint-every: checkpoints of scenes with objects are not "
+                     "supported yet (fluids, walls, emitters, outlets and probes are)");
   if (!options.quiet) {
     printCalibration(stdout, sim);
     if (std::string(sim.backendName()) == "cuda") {
@@ -94,9 +139,13 @@ int runCommand(const RunOptions& options) {
   const double framePeriod = 1.0 / scene.output.fps;
   const auto start = Clock::now();
   RunRecord record;
+  record.firstStep = sim.stepCount();
+  if (resumed)
+    record.resumedFrom = {
+        {"checkpoint", resumed->file.string()}, {"time", startTime}, {"step", record.firstStep}};
   Progress progress(endTime, !options.quiet);
   auto lastFrameWall = Clock::now();
-  std::uint64_t lastFrameSteps = 0;
+  std::uint64_t lastFrameSteps = sim.stepCount();
   auto writeFrame = [&] {
     const std::uint64_t steps = sim.stepCount() - lastFrameSteps;
     const double wallMsPerStep = steps ? 1000.0 * secondsSince(lastFrameWall) / double(steps) : 0.0;
@@ -106,16 +155,34 @@ int runCommand(const RunOptions& options) {
     lastFrameSteps = sim.stepCount();
   };
 
-  output.writeBoundary(sim.boundaryFrame());
+  // After a frame: the first frame in each new interval k T <= t < (k + 1) T, and the last.
+  // Counted in whole intervals (with room for rounding), so that a resumed run and one never
+  // interrupted take theirs at the same frames.
+  const auto interval = [&](double t) {
+    return std::floor(t / checkpointEvery * (1.0 + 1e-12) + 1e-9);
+  };
+  double lastCheckpoint = startTime;
+  auto checkpointIfDue = [&] {
+    if (checkpointEvery <= 0.0) return;
+    if (interval(sim.time()) <= interval(lastCheckpoint) && sim.time() < endTime) return;
+    writeCheckpoint(output.dir(), sim, output.position(), checkpointEvery);
+    lastCheckpoint = sim.time();
+  };
+
+  const int firstFrame = resumed ? resumed->position.frame + 1 : 1;
   try {
-    writeFrame();
-    for (int frame = 1; sim.time() < endTime; ++frame) {
+    if (!resumed) {
+      output.writeBoundary(sim.boundaryFrame());
+      writeFrame();
+    }
+    for (int frame = firstFrame; sim.time() < endTime; ++frame) {
       const double frameTime = std::min(frame * framePeriod, endTime);
       while (sim.time() < frameTime) {
         sim.step(frameTime);
         progress.update(sim.time(), sim.stepCount());
       }
       writeFrame();
+      checkpointIfDue();
     }
   } catch (const SimulationFailure& failure) {
     output.finish();  // the frames before the failure are kept
@@ -126,7 +193,7 @@ int runCommand(const RunOptions& options) {
                       {"step", failure.step()},
                       {"particle", failure.particleId()},
                       {"quantity", failure.quantity()}};
-    writeSummary(output, sim, record);
+    writeSummary(output, sim, record, startTime);
     std::fprintf(stderr, "error: %s\nthe frames and stats up to t = %g s are in %s\n",
                  failure.what(), sim.time(), output.dir().c_str());
     return kExitSimulationFailed;
@@ -138,7 +205,7 @@ int runCommand(const RunOptions& options) {
     record.failure = {{"message", failure.what()}, {"quantity", "output"}};
     bool summarised = true;
     try {
-      writeSummary(output, sim, record);
+      writeSummary(output, sim, record, startTime);
     } catch (const std::exception&) {
       summarised = false;
     }
@@ -149,14 +216,15 @@ int runCommand(const RunOptions& options) {
   output.finish();
   progress.finish(sim.time(), sim.stepCount());
   record.wallSeconds = secondsSince(start);
-  writeSummary(output, sim, record);
+  writeSummary(output, sim, record, startTime);
   if (!options.quiet) {
     const FrameStats last = sim.stats();
     std::printf(
         "done: %llu steps, %.3f ms per step, %d frames; %llu fluid particles left, "
         "%llu removed, %llu leaked\n",
         static_cast<unsigned long long>(sim.stepCount()),
-        1000.0 * record.wallSeconds / double(std::max<std::uint64_t>(sim.stepCount(), 1)),
+        1000.0 * record.wallSeconds /
+            double(std::max<std::uint64_t>(sim.stepCount() - record.firstStep, 1)),
         output.framesWritten(), static_cast<unsigned long long>(last.fluidCount),
         static_cast<unsigned long long>(last.removedCount),
         static_cast<unsigned long long>(last.leakedCount));

@@ -1,6 +1,7 @@
 #include "run_output.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,7 @@ namespace {
 // them, and nothing else.
 const char* const kRunFiles[] = {"frames",       "frames.pvd",   "stats.csv",    "probes.csv",
                                  "summary.json", "boundary.vtp", "boundary.ply", "boundary.csv",
-                                 "images",       "video.mp4"};
+                                 "images",       "video.mp4",    "checkpoints"};
 
 // A file and what a run killed while writing it left: "<name>.tmp" (io/frame_writer.hpp).
 std::vector<fs::path> runFiles(const fs::path& dir) {
@@ -61,6 +62,48 @@ RunOutput::RunOutput(fs::path dir, FrameFormat format, bool force,
                       "': " + error.message());
   stats_.emplace(dir_ / "stats.csv", std::move(objectNames));
   if (format_ == FrameFormat::Vtp) series_.emplace(dir_ / "frames.pvd");
+}
+
+RunOutput::RunOutput(fs::path dir, FrameFormat format, std::vector<std::string> objectNames,
+                     const RunPosition& position, const FrameStats& previous)
+    : dir_(std::move(dir)), format_(format), frames_(position.frame + 1) {
+  // Frames past the checkpoint's, and what a kill left half written.
+  std::error_code error;
+  for (fs::directory_iterator it(dir_ / "frames", error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    int index = -1;
+    if (name.rfind("frame_", 0) == 0 && name.size() > 11) index = std::atoi(name.c_str() + 6);
+    const bool temporary = it->path().extension() == ".tmp";
+    if (temporary || index > position.frame) {
+      std::error_code removeError;
+      fs::remove(it->path(), removeError);
+      if (removeError)
+        throw OutputError("cannot remove '" + it->path().string() + "': " + removeError.message());
+    }
+  }
+  stats_.emplace(dir_ / "stats.csv", std::move(objectNames),
+                 io::RowFile::Continue{position.statsBytes}, previous);
+  if (position.probesBytes > 0)
+    probes_.emplace(dir_ / "probes.csv", io::RowFile::Continue{position.probesBytes});
+  if (format_ == FrameFormat::Vtp) series_.emplace(dir_ / "frames.pvd", position.series);
+}
+
+RunPosition RunOutput::position() {
+  finish();
+  RunPosition p;
+  p.frame = framesWritten() - 1;
+  const auto sizeOf = [](const fs::path& file) {
+    std::error_code error;
+    const std::uintmax_t size = fs::file_size(file, error);
+    if (error)
+      throw OutputError("cannot read the size of '" + file.string() + "': " + error.message());
+    return size;
+  };
+  p.statsBytes = sizeOf(dir_ / "stats.csv");
+  p.probesBytes = probes_ ? sizeOf(dir_ / "probes.csv") : 0;
+  if (series_) p.series = series_->frames();
+  return p;
 }
 
 void RunOutput::writeBoundary(const ParticleFrame& walls) {

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "checkpoint.hpp"
 #include "io/probes_writer.hpp"
 #include "io/pvd_series.hpp"
 #include "io/stats_writer.hpp"
@@ -31,6 +32,12 @@ class RunOutput {
   RunOutput(std::filesystem::path dir, FrameFormat format, bool force,
             std::vector<std::string> objectNames = {});
 
+  // A resumed run's: `dir` as the checkpoint at `position` left it. Frames after its frame, and
+  // rows after those it counted, are removed (a run killed after the checkpoint wrote them;
+  // they are written again); `previous` are the statistics of its last row.
+  RunOutput(std::filesystem::path dir, FrameFormat format, std::vector<std::string> objectNames,
+            const RunPosition& position, const FrameStats& previous);
+
   ~RunOutput();  // waits for the frames queued
 
   // Frames hold the fluid; the static walls go once into DIR/boundary.EXT.
@@ -44,6 +51,9 @@ class RunOutput {
   // without probes).
   void writeProbes(const std::vector<std::string>& columns, const std::vector<ProbeRow>& rows);
   const std::filesystem::path& dir() const { return dir_; }
+  // Where the outputs stand once every frame queued is written (a checkpoint's RunPosition).
+  // Throws the first writing error.
+  RunPosition position();
   int framesWritten() const;
 
  private:

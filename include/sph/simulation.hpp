@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <iosfwd>
 #include <limits>
 #include <memory>
 #include <string>
@@ -154,6 +155,18 @@ class Simulation {
   // started) over the next `arriveIn` seconds, and holds it there: a user dragging it.
   // Throws InputError when no kinematic object has that name.
   void steerObject(const std::string& name, const Vec3d& offset, double arriveIn);
+
+  // The whole state between two steps — the particles, the clock and the adaptive step, the
+  // counters, the incompressible solver's warm start, the emitters', outlets' and probes'
+  // progress, the live parameters — as bytes that loadState takes back. A simulation built
+  // from the same scene and options that loads them steps on exactly as this one would: on the
+  // CPU backend, byte for byte. Scenes with objects are not supported yet (InputError).
+  // Throws OutputError when `out` fails.
+  void saveState(std::ostream& out) const;
+  // Throws InputError saying why when `in` is not a state this build of sph wrote (another
+  // format version), is cut short or corrupted (its checksum), or was saved from another scene
+  // (its particle counts, solver, emitters, outlets, probes or spacing); nothing changes then.
+  void loadState(std::istream& in);
 
   double time() const;
   std::uint64_t stepCount() const;

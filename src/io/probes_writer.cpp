@@ -19,6 +19,9 @@ std::string headerOf(const std::vector<std::string>& columns) {
 ProbesWriter::ProbesWriter(std::filesystem::path csvFile, const std::vector<std::string>& columns)
     : file_(std::move(csvFile), headerOf(columns)) {}
 
+ProbesWriter::ProbesWriter(std::filesystem::path csvFile, RowFile::Continue from)
+    : file_(std::move(csvFile), from) {}
+
 void ProbesWriter::append(const std::vector<ProbeRow>& rows) {
   if (rows.empty()) return;
   std::string text;

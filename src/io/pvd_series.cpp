@@ -37,6 +37,18 @@ std::string escapeXmlAttribute(const std::string& text) {
 
 PvdSeries::PvdSeries(std::filesystem::path pvdFile) : pvdFile_(std::move(pvdFile)) {}
 
+PvdSeries::PvdSeries(std::filesystem::path pvdFile,
+                     std::vector<std::pair<double, std::string>> frames)
+    : pvdFile_(std::move(pvdFile)) {
+  for (auto& [time, file] : frames) entries_.push_back({time, std::move(file)});
+}
+
+std::vector<std::pair<double, std::string>> PvdSeries::frames() const {
+  std::vector<std::pair<double, std::string>> out;
+  for (const Entry& e : entries_) out.emplace_back(e.time, e.file);
+  return out;
+}
+
 void PvdSeries::add(double time, const std::string& relativeFile) {
   entries_.push_back({time, escapeXmlAttribute(relativeFile)});
   try {

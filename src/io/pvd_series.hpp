@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sph::io {
@@ -12,6 +13,9 @@ class PvdSeries {
  public:
   // Nothing is written until the first add.
   explicit PvdSeries(std::filesystem::path pvdFile);
+  // A resumed run's: the frames its checkpoint listed (time, file), written again at the next add.
+  PvdSeries(std::filesystem::path pvdFile, std::vector<std::pair<double, std::string>> frames);
+  std::vector<std::pair<double, std::string>> frames() const;
 
   // Appends a frame (`relativeFile` relative to the .pvd's folder) and rewrites the whole
   // collection atomically, so the .pvd on disk is valid after every frame even if the run dies.

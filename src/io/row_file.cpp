@@ -6,7 +6,10 @@
 #include <cerrno>
 #include <cstdarg>
 #include <cstdio>
+#include <string>
 #include <utility>
+
+#include "sph/error.hpp"
 
 #include "io/file_error.hpp"
 
@@ -16,6 +19,20 @@ RowFile::RowFile(std::filesystem::path path, const std::string& header) : path_(
   fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0) throwFileError("open", path_, errno);
   append(header);
+}
+
+RowFile::RowFile(std::filesystem::path path, Continue from) : path_(std::move(path)) {
+  fd_ = ::open(path_.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd_ < 0) throwFileError("open", path_, errno);
+  const off_t end = ::lseek(fd_, 0, SEEK_END);
+  if (end < 0) throwFileError("seek in", path_, errno);
+  if (std::uintmax_t(end) < from.keepBytes)
+    throw InputError(path_.string() + ": holds " + std::to_string(end) + " bytes, fewer than the " +
+                     std::to_string(from.keepBytes) +
+                     " the checkpoint counted: it was changed since");
+  if (::ftruncate(fd_, off_t(from.keepBytes)) != 0) throwFileError("truncate", path_, errno);
+  if (::lseek(fd_, off_t(from.keepBytes), SEEK_SET) < 0) throwFileError("seek in", path_, errno);
+  committed_ = std::size_t(from.keepBytes);
 }
 
 RowFile::~RowFile() {

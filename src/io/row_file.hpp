@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -14,6 +15,13 @@ class RowFile {
   // Creates (truncates) the file and writes `header` (a line, its newline included). Throws
   // OutputError naming the path and the system error.
   RowFile(std::filesystem::path path, const std::string& header);
+  // Opens the existing file to append to, cut back to its first `keepBytes` (the rows a
+  // resumed run's checkpoint counted; later ones are written again). Throws OutputError naming
+  // the path when it cannot be opened, and InputError when it is shorter than that.
+  struct Continue {
+    std::uintmax_t keepBytes;
+  };
+  RowFile(std::filesystem::path path, Continue from);
   ~RowFile();
   RowFile(const RowFile&) = delete;
   RowFile& operator=(const RowFile&) = delete;

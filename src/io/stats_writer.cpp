@@ -26,6 +26,10 @@ std::string headerOf(const std::vector<std::string>& objectNames) {
 StatsWriter::StatsWriter(std::filesystem::path csvFile, std::vector<std::string> objectNames)
     : objectCount_(objectNames.size()), file_(std::move(csvFile), headerOf(objectNames)) {}
 
+StatsWriter::StatsWriter(std::filesystem::path csvFile, std::vector<std::string> objectNames,
+                         RowFile::Continue from, const FrameStats& previous)
+    : objectCount_(objectNames.size()), previous_(previous), file_(std::move(csvFile), from) {}
+
 void StatsWriter::append(const FrameStats& s) {
   const std::uint64_t steps = s.steps - previous_.steps;
   const auto perStep = [&](std::uint64_t count) {

@@ -142,4 +142,20 @@ NewParticles Emitters::emit(double t) {
   return out;
 }
 
+void Emitters::save(StateWriter& out) const {
+  out.value(std::uint64_t(emitters_.size()));
+  for (const Emitter& e : emitters_) {
+    out.value(e.layers);
+    out.value(e.emitted);
+  }
+}
+
+void Emitters::load(StateReader& in) {
+  if (in.value<std::uint64_t>() != emitters_.size()) in.mismatch("its emitters");
+  for (Emitter& e : emitters_) {
+    e.layers = in.value<std::uint64_t>();
+    e.emitted = in.value<std::uint64_t>();
+  }
+}
+
 }  // namespace sph::sim

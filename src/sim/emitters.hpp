@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fluid/drive_inflow.hpp"
+#include "sim/state_stream.hpp"
 #include "sph/core/vec.hpp"
 #include "sph/scene.hpp"
 
@@ -38,6 +39,10 @@ class Emitters {
   fluid::InflowZones zones() const;
   // The layers due by time t and not yet put, placed as they stand at t.
   NewParticles emit(double t);
+
+  // What each has put so far (Simulation::saveState).
+  void save(StateWriter& out) const;
+  void load(StateReader& in);
 
  private:
   struct Emitter {

@@ -206,6 +206,46 @@ class EngineImpl final : public FluidEngine {
     B::download(boundary_.position, w.position.data(), boundary_.count);
     return w;
   }
+  HostFluidState downloadState() const override {
+    const std::size_t n = fluid_.count;
+    HostFluidState s;
+    const auto copy = [](const auto& buffer, auto& host, std::size_t count) {
+      host.resize(count);
+      B::download(buffer, host.data(), count);
+    };
+    copy(fluid_.id, s.id, n);
+    copy(fluid_.position, s.position, n);
+    copy(fluid_.velocity, s.velocity, n);
+    copy(fluid_.acceleration, s.acceleration, n);
+    copy(fluid_.density, s.density, n);
+    copy(fluid_.pressure, s.pressure, n);
+    copy(fluid_.warmStart, s.warmStart, fluid_.warmStart.size() != 0 ? n : 0);
+    copy(fluid_.externalById, s.externalById, fluid_.externalById.size());
+    s.drainedByOutlet = drained_;
+    s.densityIsState = fluid_.densityIsState;
+    return s;
+  }
+  void uploadState(const HostFluidState& s) override {
+    const std::size_t n = s.id.size();
+    fluid_.count = n;
+    B::upload(fluid_.id, s.id.data(), n);
+    B::upload(fluid_.position, s.position.data(), n);
+    B::upload(fluid_.velocity, s.velocity.data(), n);
+    B::upload(fluid_.acceleration, s.acceleration.data(), n);
+    B::upload(fluid_.density, s.density.data(), n);
+    B::upload(fluid_.pressure, s.pressure.data(), n);
+    if (s.warmStart.empty())
+      fluid_.warmStart.resize(0);
+    else
+      B::upload(fluid_.warmStart, s.warmStart.data(), n);
+    if (s.externalById.empty())
+      fluid_.externalById.resize(0);
+    else
+      B::upload(fluid_.externalById, s.externalById.data(), s.externalById.size());
+    drained_ = s.drainedByOutlet;
+    fluid_.densityIsState = s.densityIsState;
+    resizeWorkArrays(n);
+  }
   void watchWalls(const std::vector<std::uint8_t>& watched) override {
     B::upload(watchedWall_, watched.data(), watched.size());
   }

@@ -50,6 +50,21 @@ struct HostContainment {
   std::vector<Vec4> firstExitById;
 };
 
+// What the next step reads of the fluid, in the engine's order (the order decides how the next
+// sort breaks ties, so a state put back in it steps on byte for byte): Simulation::saveState.
+struct HostFluidState {
+  std::vector<std::uint32_t> id;
+  std::vector<Vec4> position;
+  std::vector<Vec4> velocity;
+  std::vector<Vec4> acceleration;  // w: |∇c| as last measured
+  std::vector<float> density;      // state with continuity density
+  std::vector<float> pressure;
+  std::vector<Vec4> warmStart;     // empty unless the incompressible solver has run
+  std::vector<Vec4> externalById;  // empty when unused
+  std::vector<std::uint64_t> drainedByOutlet;
+  bool densityIsState = false;
+};
+
 struct HostWalls {
   std::vector<std::uint32_t> id;
   std::vector<Vec4> position;  // w: volume
@@ -114,6 +129,9 @@ class FluidEngine {
   // them to pinned host memory while the next steps run; the CPU copies at once.
   virtual std::unique_ptr<PendingParticles> beginDownload() const = 0;
   virtual HostWalls downloadWalls() const = 0;
+  // The fluid's state between steps, and back (the particle counts may differ from now's).
+  virtual HostFluidState downloadState() const = 0;
+  virtual void uploadState(const HostFluidState& state) = 0;
   // Which wall particles wallForces measures (1) and which it leaves at zero, in
   // downloadWalls' order: only the walls a probe reads pay the pass.
   virtual void watchWalls(const std::vector<std::uint8_t>& watched) = 0;

@@ -119,4 +119,34 @@ std::vector<ProbeRow> ProbeSampler::take() {
   return out;
 }
 
+void ProbeSampler::save(StateWriter& out) const {
+  out.value(std::uint64_t(columns_.size()));
+  out.value(std::uint64_t(nextSample_));
+  out.value(recorded_);
+  out.value(lastTime_);
+  out.vector(lastValues_);
+  out.value(std::uint64_t(rows_.size()));
+  for (const ProbeRow& row : rows_) {
+    out.value(row.time);
+    out.vector(row.values);
+  }
+}
+
+void ProbeSampler::load(StateReader& in) {
+  if (in.value<std::uint64_t>() != columns_.size()) in.mismatch("its probes");
+  nextSample_ = std::size_t(in.value<std::uint64_t>());
+  recorded_ = in.value<bool>();
+  lastTime_ = in.value<double>();
+  lastValues_ = in.vector<double>();
+  const std::uint64_t rows = in.value<std::uint64_t>();
+  rows_.clear();
+  for (std::uint64_t k = 0; k < rows; ++k) {
+    ProbeRow row;
+    row.time = in.value<double>();
+    row.values = in.vector<double>();
+    if (row.values.size() != columns_.size()) in.mismatch("a probe row's columns");
+    rows_.push_back(std::move(row));
+  }
+}
+
 }  // namespace sph::sim

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/state_stream.hpp"
 #include "sph/core/probe.hpp"
 #include "sph/scene.hpp"
 #include "sph/simulation.hpp"
@@ -37,6 +38,11 @@ class ProbeSampler {
   void record(double t, const std::vector<PointSums>& sums, const Forces& forces);
   // The rows added since the last call.
   std::vector<ProbeRow> take();
+
+  // Where the sampling stands: the last state's values, the next row's time and the rows not
+  // yet taken (Simulation::saveState).
+  void save(StateWriter& out) const;
+  void load(StateReader& in);
 
  private:
   struct Probe {

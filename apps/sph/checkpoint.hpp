@@ -1,0 +1,50 @@
+// Checkpoints of a run (sph run --checkpoint-every T, sph run --resume DIR):
+// DIR/checkpoints/checkpoint_NNNNN.sphck, NNNNN the frame it was taken at. A checkpoint holds
+// the run's resolved scene, where its outputs stood (the frames, the bytes of stats.csv and
+// probes.csv, the frames.pvd series) and the simulation's whole state (Simulation::saveState),
+// the lot under one checksum. Each is written aside and renamed into place, so a run killed
+// at any moment leaves only whole checkpoints; the last two are kept.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sph/simulation.hpp"
+
+namespace sph::cli {
+
+// Where the run's outputs stood when the checkpoint was taken.
+struct RunPosition {
+  int frame = 0;  // the index of the last frame written
+  std::uintmax_t statsBytes = 0;
+  std::uintmax_t probesBytes = 0;                      // 0: no probes.csv yet
+  std::vector<std::pair<double, std::string>> series;  // frames.pvd: time, file
+};
+
+struct Checkpoint {
+  std::filesystem::path file;
+  std::string sceneFile;  // where the scene was read from, for messages
+  nlohmann::json scene;   // resolved (io::sceneToJson)
+  double checkpointEvery = 0.0;
+  double time = 0.0;  // simulated, s
+  RunPosition position;
+  std::string state;  // Simulation::saveState's bytes
+};
+
+std::filesystem::path checkpointDir(const std::filesystem::path& runDir);
+
+// Writes the checkpoint of `sim` at `position` and removes all but the newest two. Throws
+// OutputError naming the file.
+void writeCheckpoint(const std::filesystem::path& runDir, const Simulation& sim,
+                     const RunPosition& position, double checkpointEvery);
+
+// The newest checkpoint of the run in `runDir`. Throws InputError naming the file and saying
+// why when there is none, or the newest is corrupted, cut short or from another version of sph.
+Checkpoint readLatestCheckpoint(const std::filesystem::path& runDir);
+
+}  // namespace sph::cli

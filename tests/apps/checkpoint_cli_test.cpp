@@ -1,0 +1,190 @@
+// sph run --checkpoint-every / --resume: a run killed at a random moment and resumed from its
+// newest checkpoint writes the same frames, probes and statistics as one never interrupted; a
+// finished run extends with a longer --duration; a damaged checkpoint exits 2 naming it.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "run_sph.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Result = sph::testing::CommandResult;
+
+Result runSph(const std::string& arguments) {
+  return sph::testing::runSph(arguments, "sph_checkpoint_");
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// stats.csv without its wall_ms_per_step column, the one that times the machine.
+std::string statsWithoutTimings(const fs::path& file) {
+  std::istringstream in(readFile(file));
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    for (std::size_t k = 0; k < cells.size(); ++k)
+      if (k != 12) out += cells[k] + ",";
+    out += "\n";
+  }
+  return out;
+}
+
+class Checkpoints : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(::testing::TempDir()) /
+           ("sph_checkpoint_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  // The shipped pipe at a coarse spacing: walls, an emitter, an outlet and probes.
+  std::string pipe() const {
+    return std::string(SPH_SOURCE_DIR) + "/scenes/pipe_flow.json --set fluid.spacing=0.01 --fps 50";
+  }
+  void expectSameRun(const fs::path& a, const fs::path& b) const {
+    int frames = 0;
+    for (const auto& entry : fs::directory_iterator(a / "frames")) {
+      const fs::path other = b / "frames" / entry.path().filename();
+      ASSERT_TRUE(fs::exists(other)) << other;
+      EXPECT_EQ(readFile(entry.path()), readFile(other)) << entry.path().filename();
+      ++frames;
+    }
+    EXPECT_EQ(frames,
+              std::distance(fs::directory_iterator(b / "frames"), fs::directory_iterator{}));
+    EXPECT_EQ(readFile(a / "probes.csv"), readFile(b / "probes.csv"));
+    EXPECT_EQ(statsWithoutTimings(a / "stats.csv"), statsWithoutTimings(b / "stats.csv"));
+    EXPECT_EQ(readFile(a / "frames.pvd"), readFile(b / "frames.pvd"));
+  }
+  fs::path dir_;
+};
+
+TEST_F(Checkpoints, AKilledRunResumesToTheSameBytes) {
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  const Result reference =
+      runSph("run " + pipe() + " --duration 1.2 --threads 2 --quiet --out " + whole.string());
+  ASSERT_EQ(reference.code, 0) << reference.output;
+
+  // Started on its own, and killed (SIGKILL) at a random moment after its first checkpoint.
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const std::string command =
+        std::string(SPH_BINARY) + " run " + pipe() +
+        " --duration 1.2 --threads 1 --quiet --checkpoint-every 0.1 --out " + killed.string() +
+        " > /dev/null 2>&1";
+    execl("/bin/sh", "sh", "-c", ("exec " + command).c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  while (!fs::exists(killed / "checkpoints" / "checkpoint_00005.sphck") &&
+         std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  std::mt19937 random(std::random_device{}());
+  std::this_thread::sleep_for(std::chrono::milliseconds(random() % 400));
+  kill(child, SIGKILL);
+  int status = 0;
+  waitpid(child, &status, 0);
+  const bool finished = WIFEXITED(status);
+  if (finished) GTEST_LOG_(INFO) << "the run finished before it could be killed";
+  ASSERT_FALSE(fs::exists(killed / "summary.json") && !finished) << "killed before it ended";
+
+  const Result resumed = runSph("run --resume " + killed.string() + " --threads 2 --quiet");
+  if (finished) {
+    EXPECT_EQ(resumed.code, 2) << "nothing left to run: " << resumed.output;
+    return;
+  }
+  ASSERT_EQ(resumed.code, 0) << resumed.output;
+  expectSameRun(whole, killed);
+  const auto summary = nlohmann::json::parse(readFile(killed / "summary.json"));
+  EXPECT_EQ(summary["status"], "completed");
+  EXPECT_TRUE(summary["resumed_from"].contains("checkpoint"));
+  // Checkpoints went on at the resumed run's interval, the last two kept, the last at the end.
+  std::vector<std::string> kept;
+  for (const auto& entry : fs::directory_iterator(killed / "checkpoints"))
+    kept.push_back(entry.path().filename().string());
+  std::sort(kept.begin(), kept.end());
+  EXPECT_EQ(kept, (std::vector<std::string>{"checkpoint_00055.sphck", "checkpoint_00060.sphck"}));
+}
+
+TEST_F(Checkpoints, AFinishedRunExtendsWithALongerDuration) {
+  const fs::path whole = dir_ / "whole", extended = dir_ / "extended";
+  ASSERT_EQ(runSph("run " + pipe() + " --duration 0.4 --quiet --out " + whole.string()).code, 0);
+  ASSERT_EQ(runSph("run " + pipe() + " --duration 0.2 --checkpoint-every 0.2 --quiet --out " +
+                   extended.string())
+                .code,
+            0);
+  const Result same = runSph("run --resume " + extended.string() + " --quiet");
+  EXPECT_EQ(same.code, 2) << same.output;
+  EXPECT_NE(same.output.find("time.duration"), std::string::npos) << same.output;
+  const Result longer = runSph("run --resume " + extended.string() + " --duration 0.4 --quiet");
+  ASSERT_EQ(longer.code, 0) << longer.output;
+  expectSameRun(whole, extended);
+}
+
+TEST_F(Checkpoints, ADamagedCheckpointOrAMisusedResumeExitsTwoSayingWhy) {
+  const fs::path run = dir_ / "run";
+  ASSERT_EQ(runSph("run " + pipe() + " --duration 0.1 --checkpoint-every 0.05 --quiet --out " +
+                   run.string())
+                .code,
+            0);
+  const fs::path newest = run / "checkpoints" / "checkpoint_00005.sphck";
+  ASSERT_TRUE(fs::exists(newest));
+  std::string bytes = readFile(newest);
+  bytes[bytes.size() / 2] = char(bytes[bytes.size() / 2] ^ 0x01);
+  std::ofstream(newest, std::ios::binary) << bytes;
+  const std::string stats = readFile(run / "stats.csv");
+
+  const Result corrupted = runSph("run --resume " + run.string() + " --duration 0.2");
+  EXPECT_EQ(corrupted.code, 2) << corrupted.output;
+  EXPECT_NE(corrupted.output.find("checkpoint_00005.sphck"), std::string::npos) << corrupted.output;
+  EXPECT_NE(corrupted.output.find("checksum"), std::string::npos) << corrupted.output;
+  EXPECT_EQ(readFile(run / "stats.csv"), stats) << "a refused resume touches nothing";
+
+  std::ofstream(newest, std::ios::binary) << bytes.substr(0, bytes.size() / 3);
+  const Result cut = runSph("run --resume " + run.string() + " --duration 0.2");
+  EXPECT_EQ(cut.code, 2) << cut.output;
+  EXPECT_NE(cut.output.find("cut short"), std::string::npos) << cut.output;
+
+  // Without the damaged one, the run resumes from the one before.
+  fs::remove(newest);
+  const Result earlier = runSph("run --resume " + run.string() + " --duration 0.2 --quiet");
+  EXPECT_EQ(earlier.code, 0) << earlier.output;
+
+  const Result none = runSph("run --resume " + dir_.string());
+  EXPECT_EQ(none.code, 2);
+  EXPECT_NE(none.output.find("no checkpoint"), std::string::npos) << none.output;
+  const Result withSet = runSph("run --resume " + run.string() + " --set fluid.viscosity.value=1");
+  EXPECT_EQ(withSet.code, 2);
+  EXPECT_NE(withSet.output.find("--set"), std::string::npos) << withSet.output;
+  const Result objects = runSph("run " + std::string(SPH_SOURCE_DIR) +
+                                "/scenes/floating_bodies.json --checkpoint-every 0.1 --out " +
+                                (dir_ / "objects").string());
+  EXPECT_EQ(objects.code, 2);
+  EXPECT_NE(objects.output.find("objects"), std::string::npos) << objects.output;
+}
+
+}  // namespace

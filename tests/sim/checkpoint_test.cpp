@@ -1,0 +1,185 @@
+// Simulation::saveState / loadState: a simulation that loads another's state steps on exactly as
+// the other does (the same bytes on the CPU backend, on any thread count), and a state that is
+// not one of this scene's, or that was damaged, is refused saying why and changes nothing.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "io/scene_loader.hpp"
+#include "scene_builders.hpp"
+#include "sph/error.hpp"
+#include "sph/simulation.hpp"
+
+namespace sph {
+namespace {
+
+void expectIdentical(const ParticleFrame& a, const ParticleFrame& b) {
+  EXPECT_EQ(a.time, b.time);
+  EXPECT_EQ(a.id, b.id);
+  EXPECT_EQ(a.position, b.position);  // exact float equality, element by element
+  EXPECT_EQ(a.velocity, b.velocity);
+  EXPECT_EQ(a.density, b.density);
+  EXPECT_EQ(a.pressure, b.pressure);
+  EXPECT_EQ(a.surface, b.surface);
+}
+
+std::string stateOf(const Simulation& sim) {
+  std::ostringstream out;
+  sim.saveState(out);
+  return out.str();
+}
+
+void load(Simulation& sim, const std::string& state) {
+  std::istringstream in(state);
+  sim.loadState(in);
+}
+
+// `scene` run for `before` steps and saved; then on for `after` steps, against a second
+// simulation (on `threads` threads) that loads the state and takes the same steps.
+void expectResumedRunMatches(const Scene& scene, int before, int after, int threads = 1) {
+  Simulation original(scene);
+  for (int i = 0; i < before; ++i) original.step();
+  const std::string state = stateOf(original);
+  const FrameStats savedStats = original.stats();
+  for (int i = 0; i < after; ++i) original.step();
+
+  SimulationOptions options;
+  options.threads = threads;
+  Simulation resumed(scene, options);
+  load(resumed, state);
+  EXPECT_EQ(resumed.time(), savedStats.time);
+  EXPECT_EQ(resumed.stepCount(), savedStats.steps);
+  EXPECT_EQ(resumed.stats().surfaceCount, savedStats.surfaceCount);
+  for (int i = 0; i < after; ++i) resumed.step();
+  expectIdentical(original.frame(), resumed.frame());
+  EXPECT_EQ(original.stepCount(), resumed.stepCount());
+  EXPECT_EQ(original.lastDt(), resumed.lastDt());
+  EXPECT_EQ(original.removedCount(), resumed.removedCount());
+  EXPECT_EQ(original.emittedCount(), resumed.emittedCount());
+  EXPECT_EQ(original.lastSolve().densityIterations, resumed.lastSolve().densityIterations);
+  EXPECT_EQ(original.stats().densityIterations, resumed.stats().densityIterations);
+}
+
+Scene fallingBlock() {
+  Scene scene = testing::restingTank(0.01, 0.1, 0.1);
+  scene.fluid.blocks[0].box.min[1] = 0.05;
+  scene.fluid.blocks[0].box.max[1] = 0.15;
+  scene.fluid.blocks[0].velocity = {0.3, 0, -0.2};
+  return scene;
+}
+
+TEST(Checkpoint, TheWeaklyCompressibleSolverStepsOnByteForByte) {
+  expectResumedRunMatches(fallingBlock(), 60, 60);
+}
+
+TEST(Checkpoint, TheIncompressibleSolverStepsOnWithItsWarmStartOnAnotherThreadCount) {
+  Scene scene = fallingBlock();
+  scene.fluid.solver = FluidSolver::Dfsph;
+  scene.fluid.kernel = KernelKind::CubicSpline;
+  expectResumedRunMatches(scene, 25, 25, 2);
+}
+
+TEST(Checkpoint, ContinuityDensityIsCarriedOver) {
+  Scene scene = fallingBlock();
+  scene.fluid.density = DensityModel::Continuity;
+  expectResumedRunMatches(scene, 60, 60);
+}
+
+// Emitters, an outlet and probes, as the shipped pipe scene has them, once fluid has been put in
+// and drained.
+TEST(Checkpoint, EmittersOutletsAndProbesPickUpWhereTheyStood) {
+  Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/pipe_flow.json",
+                              {"fluid.spacing=0.01", "fluid.blocks.0.min=[0.2, 0.07, 0.02]"});
+  Simulation original(scene);
+  original.advanceTo(0.3);
+  ASSERT_GT(original.emittedCount(), 0u);
+  ASSERT_GT(original.outletStats()[0].particles, 0u);
+  original.takeProbeRows();
+  const std::string state = stateOf(original);
+  original.advanceTo(0.4);
+
+  Simulation resumed(scene);
+  load(resumed, state);
+  resumed.advanceTo(0.4);
+  expectIdentical(original.frame(), resumed.frame());
+  EXPECT_EQ(original.outletStats()[0].particles, resumed.outletStats()[0].particles);
+  const std::vector<ProbeRow> a = original.takeProbeRows(), b = resumed.takeProbeRows();
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_FALSE(a.empty());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].time, b[k].time);
+    EXPECT_EQ(a[k].values, b[k].values);
+  }
+}
+
+TEST(Checkpoint, LiveParametersChangedBeforeTheSaveComeBack) {
+  const Scene scene = fallingBlock();
+  Simulation original(scene);
+  LiveParameters live = original.liveParameters();
+  live.viscosity *= 3.0;
+  live.gravity = {0.0, -5.0, 1.0};
+  original.setLiveParameters(live);
+  for (int i = 0; i < 30; ++i) original.step();
+  const std::string state = stateOf(original);
+  for (int i = 0; i < 30; ++i) original.step();
+
+  Simulation resumed(scene);
+  load(resumed, state);
+  EXPECT_EQ(resumed.liveParameters().viscosity, live.viscosity);
+  EXPECT_EQ(resumed.liveParameters().gravity, live.gravity);
+  for (int i = 0; i < 30; ++i) resumed.step();
+  expectIdentical(original.frame(), resumed.frame());
+}
+
+// Loads `state` into a fresh simulation of `scene`, expecting InputError with `expected` in its
+// message, and the simulation as it was.
+void expectRefused(const Scene& scene, const std::string& state, const std::string& expected) {
+  Simulation sim(scene);
+  for (int i = 0; i < 3; ++i) sim.step();
+  const ParticleFrame before = sim.frame();
+  try {
+    load(sim, state);
+    ADD_FAILURE() << "a state that should be refused was loaded (" << expected << ")";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+  expectIdentical(before, sim.frame());
+  EXPECT_EQ(sim.stepCount(), 3u);
+  sim.step();  // and it still steps
+}
+
+TEST(Checkpoint, ADamagedOrForeignStateIsRefusedSayingWhyAndChangesNothing) {
+  const Scene scene = fallingBlock();
+  Simulation source(scene);
+  for (int i = 0; i < 10; ++i) source.step();
+  const std::string state = stateOf(source);
+
+  std::string flipped = state;
+  flipped[state.size() / 2] = char(flipped[state.size() / 2] ^ 0x10);
+  expectRefused(scene, flipped, "checksum");
+  expectRefused(scene, state.substr(0, state.size() - 100), "cut short");
+  expectRefused(scene, "", "not a saved sph simulation state");
+  expectRefused(scene, "{\"fluid\": 1}", "not a saved sph simulation state");
+  std::string otherVersion = state;
+  otherVersion[8] = char(otherVersion[8] + 1);  // the format version follows the magic word
+  expectRefused(scene, otherVersion, "format");
+
+  Scene wider = scene;
+  wider.fluid.blocks[0].box.max[0] = 0.09;
+  expectRefused(wider, state, "fluid particles");
+  Scene incompressible = scene;
+  incompressible.fluid.solver = FluidSolver::Dfsph;
+  expectRefused(incompressible, state, "fluid.solver");
+}
+
+TEST(Checkpoint, AStateWithObjectsIsNotSavedYet) {
+  const Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/floating_bodies.json",
+                                    {"fluid.spacing=0.02"});
+  Simulation sim(scene);
+  std::ostringstream out;
+  EXPECT_THROW(sim.saveState(out), InputError);
+}
+
+}  // namespace
+}  // namespace sph
