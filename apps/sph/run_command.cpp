@@ -117,10 +117,6 @@ int runCommand(const RunOptions& options) {
   const double checkpointEvery = options.checkpointEvery > 0.0 ? options.checkpointEvery
                                  : resumed                     ? resumed->checkpointEvery
                                                                : 0.0;
-  if (checkpointEvery > 0.0 && !scene.objects.empty())
-    throw InputError(scene.sourcePath +
-                     ": objects: --checkpoint-every: checkpoints of scenes with objects are not "
-                     "supported yet (fluids, walls, emitters, outlets and probes are)");
   if (!options.quiet) {
     printCalibration(stdout, sim);
     if (std::string(sim.backendName()) == "cuda") {

@@ -71,6 +71,18 @@ class ObjectExchange {
   // Adds force[k] × dt to the impulse of particle handle[k], for k < count.
   void depositForces(const std::uint32_t* handle, const Vec4* force, std::size_t count, double dt);
 
+  // --- a saved simulation state (Simulation::saveState), with neither side in a call ---
+  struct Snapshot {
+    ObjectSurface front;  // the newest publication
+    std::uint64_t version = 0;
+    std::vector<Vec3> impulse;   // by handle, since the last take
+    double span = 0.0;           // s
+    std::vector<Vec3> lastMean;  // by handle
+  };
+  Snapshot snapshot();
+  // Throws std::invalid_argument when the snapshot's handles are not this exchange's.
+  void restore(Snapshot snapshot);
+
  private:
   std::size_t handleCount_;
   ObjectSurface back_;

@@ -158,10 +158,10 @@ class Simulation {
 
   // The whole state between two steps — the particles, the clock and the adaptive step, the
   // counters, the incompressible solver's warm start, the emitters', outlets' and probes'
-  // progress, the live parameters — as bytes that loadState takes back. A simulation built
-  // from the same scene and options that loads them steps on exactly as this one would: on the
-  // CPU backend, byte for byte. Scenes with objects are not supported yet (InputError).
-  // Throws OutputError when `out` fails.
+  // progress, the live parameters, and the objects: their engine's world (waited for), its
+  // exchange with the fluid and the leak tracking — as bytes that loadState takes back. A
+  // simulation built from the same scene that loads them steps on exactly as this one would:
+  // on the CPU backend byte for byte, on any thread count. Throws OutputError when `out` fails.
   void saveState(std::ostream& out) const;
   // Throws InputError saying why when `in` is not a state this build of sph wrote (another
   // format version), is cut short or corrupted (its checksum), or was saved from another scene

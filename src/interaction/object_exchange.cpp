@@ -65,4 +65,39 @@ void ObjectExchange::depositForces(const std::uint32_t* handle, const Vec4* forc
   span_ += dt;
 }
 
+ObjectExchange::Snapshot ObjectExchange::snapshot() {
+  Snapshot s;
+  {
+    std::lock_guard<std::mutex> lock(frontMutex_);
+    s.front = front_;
+    s.version = version_;
+  }
+  std::lock_guard<std::mutex> lock(forceMutex_);
+  s.impulse = impulse_;
+  s.span = span_;
+  s.lastMean = lastMean_;
+  return s;
+}
+
+void ObjectExchange::restore(Snapshot s) {
+  if (s.impulse.size() != handleCount_ || s.lastMean.size() != handleCount_)
+    throw std::invalid_argument("ObjectExchange::restore: forces for " +
+                                std::to_string(s.impulse.size()) + " handles, not " +
+                                std::to_string(handleCount_));
+  for (std::uint32_t h : s.front.handle)
+    if (h >= handleCount_)
+      throw std::invalid_argument("ObjectExchange::restore: handle " + std::to_string(h) +
+                                  " is not below the handle count " +
+                                  std::to_string(handleCount_));
+  {
+    std::lock_guard<std::mutex> lock(frontMutex_);
+    front_ = std::move(s.front);
+    version_ = s.version;
+  }
+  std::lock_guard<std::mutex> lock(forceMutex_);
+  impulse_ = std::move(s.impulse);
+  span_ = s.span;
+  lastMean_ = std::move(s.lastMean);
+}
+
 }  // namespace sph

@@ -2,6 +2,7 @@
 // the initial pose about the initial centre of mass, linear in between, held after the last.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "objects/math3d.hpp"
@@ -29,6 +30,10 @@ class KinematicPath {
   // From `now` on, a straight line from the pose at `now` to `offset` over `arriveIn` s
   // (> 0), the rotation held, then rest there: the path of an object a user drags.
   void steer(double now, const DVec3& offset, double arriveIn);
+
+  // The keyframes as they stand (steering rewrites them): for a saved simulation state.
+  const std::vector<KeyframeDesc>& keyframes() const { return keys_; }
+  void setKeyframes(std::vector<KeyframeDesc> keys) { keys_ = std::move(keys); }
 
  private:
   // The keyframe values interpolated at t: offset and rotation vector.

@@ -622,4 +622,98 @@ bool ObjectWorld::enclosesVolume(std::size_t object) const {
   return impl_->objects.at(object).shape.enclosesVolume;
 }
 
+namespace {
+
+void appendVectors(std::vector<double>& out, const std::vector<DVec3>& v) {
+  for (const DVec3& x : v) out.insert(out.end(), {x.x, x.y, x.z});
+}
+
+std::vector<DVec3> readVectors(const std::vector<double>& in, std::size_t count, const char* what) {
+  if (in.size() != 3 * count)
+    throw std::invalid_argument(std::string("ObjectWorld::restore: ") + what + " of " +
+                                std::to_string(in.size() / 3) + " entries for " +
+                                std::to_string(count));
+  std::vector<DVec3> out(count);
+  for (std::size_t k = 0; k < count; ++k) out[k] = DVec3{in[3 * k], in[3 * k + 1], in[3 * k + 2]};
+  return out;
+}
+
+}  // namespace
+
+WorldState ObjectWorld::state() const {
+  const Impl& w = *impl_;
+  WorldState s;
+  s.time = w.time;
+  appendVectors(s.position, w.position);
+  appendVectors(s.velocity, w.velocity);
+  appendVectors(s.contactForce, w.contactForce);
+  s.cut = w.published.cut;
+  for (const RigidBody& body : w.rigid) {
+    const RigidBody::Motion m = body.motion();
+    appendVectors(s.bodies, {m.position, m.velocity});
+    s.bodies.insert(s.bodies.end(),
+                    {m.orientation.w, m.orientation.x, m.orientation.y, m.orientation.z});
+    appendVectors(s.bodies, {m.angularVelocityBody});
+  }
+  for (const SpringNetwork& net : w.networks)
+    s.springBroken.insert(s.springBroken.end(), net.broken.begin(), net.broken.end());
+  for (const XpbdConstraints& x : w.xpbd)
+    s.bendingBroken.insert(s.bendingBroken.end(), x.bendingBroken.begin(), x.bendingBroken.end());
+  for (const KinematicPath& path : w.paths) {
+    s.pathKeyCounts.push_back(path.keyframes().size());
+    s.pathKeys.insert(s.pathKeys.end(), path.keyframes().begin(), path.keyframes().end());
+  }
+  return s;
+}
+
+void ObjectWorld::restore(const WorldState& s) {
+  Impl& w = *impl_;
+  const auto require = [](bool ok, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("ObjectWorld::restore: ") + what);
+  };
+  std::vector<DVec3> position = readVectors(s.position, w.position.size(), "positions");
+  std::vector<DVec3> velocity = readVectors(s.velocity, w.velocity.size(), "velocities");
+  std::vector<DVec3> contactForce = readVectors(s.contactForce, w.objects.size(), "forces");
+  require(s.cut.size() == w.published.cut.size(), "cut flags");
+  require(s.bodies.size() == 13 * w.rigid.size(), "rigid bodies");
+  std::size_t springs = 0, triples = 0, keys = 0;
+  for (const SpringNetwork& net : w.networks) springs += net.broken.size();
+  for (const XpbdConstraints& x : w.xpbd) triples += x.bendingBroken.size();
+  require(s.springBroken.size() == springs, "springs");
+  require(s.bendingBroken.size() == triples, "bending triples");
+  require(s.pathKeyCounts.size() == w.paths.size(), "kinematic paths");
+  for (std::uint64_t n : s.pathKeyCounts) keys += std::size_t(n);
+  require(s.pathKeys.size() == keys, "keyframes");
+
+  w.time = s.time;
+  w.position = std::move(position);
+  w.velocity = std::move(velocity);
+  w.contactForce = std::move(contactForce);
+  w.published.cut = s.cut;
+  for (std::size_t b = 0; b < w.rigid.size(); ++b) {
+    const double* m = &s.bodies[13 * b];
+    w.rigid[b].setMotion({DVec3{m[0], m[1], m[2]}, DVec3{m[3], m[4], m[5]},
+                          Quat{m[6], m[7], m[8], m[9]}, DVec3{m[10], m[11], m[12]}});
+  }
+  std::size_t at = 0;
+  for (SpringNetwork& net : w.networks) {
+    net.brokenCount = 0;
+    for (std::uint8_t& broken : net.broken) {
+      broken = s.springBroken[at++];
+      net.brokenCount += broken ? 1 : 0;
+    }
+  }
+  at = 0;
+  for (XpbdConstraints& x : w.xpbd)
+    for (std::uint8_t& broken : x.bendingBroken) broken = s.bendingBroken[at++];
+  at = 0;
+  for (std::size_t p = 0; p < w.paths.size(); ++p) {
+    const std::size_t n = std::size_t(s.pathKeyCounts[p]);
+    w.paths[p].setKeyframes(std::vector<KeyframeDesc>(s.pathKeys.begin() + std::ptrdiff_t(at),
+                                                      s.pathKeys.begin() + std::ptrdiff_t(at + n)));
+    at += n;
+  }
+  w.publish();
+}
+
 }  // namespace sph::objects

@@ -66,6 +66,22 @@ struct ObjectInfo {
   Vec3 startCentre{0, 0, 0};  // the centre of mass as built: steer's offsets are from here
 };
 
+// What the world's next step reads and its reports show, for a saved simulation state: the
+// particles' motion, the rigid bodies', the broken springs and bending triples, the kinematic
+// paths as steered. Everything else is fixed when the world is built from its scene.
+struct WorldState {
+  double time = 0.0;
+  std::vector<double> position, velocity;  // x, y, z per particle
+  std::vector<double> contactForce;        // x, y, z per object
+  std::vector<std::uint8_t> cut;           // per particle
+  // Per rigid body: centre of mass, velocity, orientation (w, x, y, z), body angular velocity.
+  std::vector<double> bodies;
+  std::vector<std::uint8_t> springBroken;   // every network's springs, in order
+  std::vector<std::uint8_t> bendingBroken;  // every XPBD network's triples, in order
+  std::vector<std::uint64_t> pathKeyCounts;  // per kinematic path
+  std::vector<KeyframeDesc> pathKeys;        // their keyframes, one path after another
+};
+
 class ObjectWorld {
  public:
   // Samples every object. Throws InputError naming settings.sourceName and the key
@@ -97,6 +113,11 @@ class ObjectWorld {
   // False for shapes that enclose nothing (an open tube, a solid body's own volume counts).
   bool interiorContains(std::size_t object, Vec3 p, float margin) const;
   bool enclosesVolume(std::size_t object) const;
+  WorldState state() const;
+  // Puts back a state of a world built from the same scene, and publishes it as after a step.
+  // Throws std::invalid_argument when its sizes are not this world's.
+  void restore(const WorldState& state);
+
   // See KinematicPath::steer. Throws std::invalid_argument unless `object` is kinematic.
   void steer(std::size_t object, Vec3 offset, double arriveIn);
 

@@ -29,6 +29,19 @@ class RigidBody {
   // A lower bound on the mass a contact at any particle feels, 1 / (1/M + r_max² |I⁻¹|)
   // (|I⁻¹| as the Frobenius norm bounds its largest eigenvalue), for the substep bound.
   double contactMass() const;
+  // What moves: for a saved simulation state, and back.
+  struct Motion {
+    DVec3 position, velocity;
+    Quat orientation;
+    DVec3 angularVelocityBody;
+  };
+  Motion motion() const { return {position_, velocity_, orientation_, angularVelocityBody_}; }
+  void setMotion(const Motion& m) {
+    position_ = m.position;
+    velocity_ = m.velocity;
+    orientation_ = m.orientation;
+    angularVelocityBody_ = m.angularVelocityBody;
+  }
   // Offsets of the particles from the centre of mass in the body frame.
   const std::vector<DVec3>& localPositions() const { return local_; }
 

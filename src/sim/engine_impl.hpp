@@ -190,6 +190,12 @@ class EngineImpl final : public FluidEngine {
     return out;
   }
 
+  void uploadContainment(const HostContainment& state) override {
+    B::upload(containment_.containerById, state.containerById.data(), state.containerById.size());
+    B::upload(containment_.insideById, state.insideById.data(), state.insideById.size());
+    B::upload(containment_.firstExitById, state.firstExitById.data(), state.firstExitById.size());
+  }
+
   fluid::BadParticle findBadParticle(float maxDensityError) const override {
     return fluid::findBadParticle(fluid_, params_.restDensity, maxDensityError);
   }

@@ -121,6 +121,8 @@ class FluidEngine {
   // Which object holds each fluid particle (-1: none), by id; all start inside.
   virtual void setContainers(const std::vector<std::int32_t>& byId) = 0;
   virtual HostContainment downloadContainment() const = 0;
+  // Leak tracking as downloadContainment gave it (a saved simulation state).
+  virtual void uploadContainment(const HostContainment& state) = 0;
 
   virtual fluid::BadParticle findBadParticle(float maxDensityError) const = 0;
   // Copies the fluid out as it is now, and waits for the copy.

@@ -36,6 +36,18 @@ class ObjectRunner {
   // Until the engine has finished its part of the last step. Rethrows what the engine threw.
   void wait() const;
 
+  // The engine's pacing between fluid steps (rate ≠ 1), for a saved simulation state; call
+  // wait() first.
+  struct Pacing {
+    double credit = 0.0;
+    double pendingTime = 0.0;
+  };
+  Pacing pacing() const { return {credit_, pendingTime_}; }
+  void setPacing(const Pacing& p) {
+    credit_ = p.credit;
+    pendingTime_ = p.pendingTime;
+  }
+
  private:
   void engineLoop();
   void engineStep(double dt);

@@ -88,14 +88,77 @@ Fingerprint fingerprintOf(const Scene& scene, std::uint64_t initialFluid, std::u
   return f;
 }
 
+void writeSurface(sim::StateWriter& out, const ObjectSurface& s) {
+  out.vector(s.position);
+  out.vector(s.velocity);
+  out.vector(s.normal);
+  out.vector(s.handle);
+  out.vector(s.object);
+  out.vector(s.cut);
+  out.value(s.time);
+}
+
+ObjectSurface readSurface(sim::StateReader& in) {
+  ObjectSurface s;
+  s.position = in.vector<Vec4>();
+  s.velocity = in.vector<Vec4>();
+  s.normal = in.vector<Vec4>();
+  s.handle = in.vector<std::uint32_t>();
+  s.object = in.vector<std::int32_t>();
+  s.cut = in.vector<std::uint8_t>();
+  s.time = in.value<double>();
+  const std::size_t n = s.handle.size();
+  for (std::size_t size : {s.position.size(), s.velocity.size(), s.normal.size(), s.object.size(),
+                           s.cut.size()})
+    if (size != n) in.mismatch("its objects' surface lists differ in length");
+  return s;
+}
+
+void writeWorld(sim::StateWriter& out, const objects::WorldState& w) {
+  out.value(w.time);
+  out.vector(w.position);
+  out.vector(w.velocity);
+  out.vector(w.contactForce);
+  out.vector(w.cut);
+  out.vector(w.bodies);
+  out.vector(w.springBroken);
+  out.vector(w.bendingBroken);
+  out.vector(w.pathKeyCounts);
+  out.vector(w.pathKeys);
+}
+
+objects::WorldState readWorld(sim::StateReader& in) {
+  objects::WorldState w;
+  w.time = in.value<double>();
+  w.position = in.vector<double>();
+  w.velocity = in.vector<double>();
+  w.contactForce = in.vector<double>();
+  w.cut = in.vector<std::uint8_t>();
+  w.bodies = in.vector<double>();
+  w.springBroken = in.vector<std::uint8_t>();
+  w.bendingBroken = in.vector<std::uint8_t>();
+  w.pathKeyCounts = in.vector<std::uint64_t>();
+  w.pathKeys = in.vector<KeyframeDesc>();
+  return w;
+}
+
+// The objects' part of a state: the engine's world, its pacing and the exchange between it and
+// the fluid, and what the fluid keeps of them.
+struct ObjectsState {
+  objects::WorldState world;
+  sim::ObjectRunner::Pacing pacing;
+  ObjectExchange::Snapshot exchange;
+  std::uint64_t seenPublication = 0;
+  float objectMaxSpeed = 0.0f;
+  std::uint64_t contactPairs = 0;
+  std::vector<Vec3> fluidForceOnObject, contactForceOnObject;
+  sim::HostContainment containment;
+};
+
 }  // namespace
 
 void Simulation::saveState(std::ostream& out) const {
   const Impl& s = *impl_;
-  if (s.objects)
-    throw InputError(s.scene.sourcePath +
-                     ": objects: saving the state of a scene with objects is not supported yet "
-                     "(only fluids, walls, emitters, outlets and probes)");
   sim::StateWriter w;
   fingerprintOf(s.scene, s.initialFluid, s.engine->wallCount(), s.calibration.objectParticles)
       .write(w);
@@ -128,6 +191,30 @@ void Simulation::saveState(std::ostream& out) const {
   w.vector(fluid.externalById);
   w.vector(fluid.drainedByOutlet);
   w.value(fluid.densityIsState);
+
+  w.value(std::uint8_t(s.objects ? 1 : 0));
+  if (s.objects) {
+    s.objects->wait();  // the engine's step handed over at the end of the last fluid step
+    writeWorld(w, s.objects->world().state());
+    const sim::ObjectRunner::Pacing pacing = s.objects->pacing();
+    w.value(pacing.credit);
+    w.value(pacing.pendingTime);
+    const ObjectExchange::Snapshot exchange = s.objects->exchange().snapshot();
+    writeSurface(w, exchange.front);
+    w.value(exchange.version);
+    w.vector(exchange.impulse);
+    w.value(exchange.span);
+    w.vector(exchange.lastMean);
+    w.value(s.seenPublication);
+    w.value(s.objectMaxSpeed);
+    w.value(s.contactPairs);
+    w.vector(s.fluidForceOnObject);
+    w.vector(s.contactForceOnObject);
+    const sim::HostContainment containment = s.engine->downloadContainment();
+    w.vector(containment.containerById);
+    w.vector(containment.insideById);
+    w.vector(containment.firstExitById);
+  }
   w.finish(out);
 }
 
@@ -179,6 +266,40 @@ void Simulation::loadState(std::istream& in) {
   fluid.externalById = r.vector<Vec4>();
   fluid.drainedByOutlet = r.vector<std::uint64_t>();
   fluid.densityIsState = r.value<bool>();
+
+  const bool hasObjects = r.value<std::uint8_t>() != 0;
+  if (hasObjects != bool(s.objects)) r.mismatch("its objects");
+  ObjectsState objects;
+  if (hasObjects) {
+    objects.world = readWorld(r);
+    objects.pacing.credit = r.value<double>();
+    objects.pacing.pendingTime = r.value<double>();
+    objects.exchange.front = readSurface(r);
+    objects.exchange.version = r.value<std::uint64_t>();
+    objects.exchange.impulse = r.vector<Vec3>();
+    objects.exchange.span = r.value<double>();
+    objects.exchange.lastMean = r.vector<Vec3>();
+    objects.seenPublication = r.value<std::uint64_t>();
+    objects.objectMaxSpeed = r.value<float>();
+    objects.contactPairs = r.value<std::uint64_t>();
+    objects.fluidForceOnObject = r.vector<Vec3>();
+    objects.contactForceOnObject = r.vector<Vec3>();
+    objects.containment.containerById = r.vector<std::int32_t>();
+    objects.containment.insideById = r.vector<std::uint32_t>();
+    objects.containment.firstExitById = r.vector<Vec4>();
+    const std::size_t handles = s.objects->exchange().handleCount();
+    if (objects.exchange.impulse.size() != handles || objects.exchange.lastMean.size() != handles)
+      r.mismatch("its object particles' forces");
+    for (std::uint32_t h : objects.exchange.front.handle)
+      if (h >= handles) r.mismatch("an object particle past the engine's");
+    if (objects.fluidForceOnObject.size() != s.fluidForceOnObject.size() ||
+        objects.contactForceOnObject.size() != s.contactForceOnObject.size())
+      r.mismatch("its objects' forces");
+    const std::size_t ids = objects.containment.containerById.size();
+    if (objects.containment.insideById.size() != ids ||
+        objects.containment.firstExitById.size() != ids || ids < s.initialFluid)
+      r.mismatch("its leak tracking");
+  }
   r.expectEnd();
   const std::size_t n = fluid.id.size();
   for (std::size_t size : {fluid.position.size(), fluid.velocity.size(), fluid.acceleration.size(),
@@ -189,6 +310,14 @@ void Simulation::loadState(std::istream& in) {
   for (std::uint32_t id : fluid.id)
     if (id >= nextId) r.mismatch("a particle id past the ids given out");
 
+  if (hasObjects) {
+    s.objects->wait();
+    try {  // first: the world checks its own sizes before it changes anything
+      s.objects->world().restore(objects.world);
+    } catch (const std::invalid_argument& e) {
+      r.mismatch(e.what());
+    }
+  }
   if (!sameLive(live, liveParameters())) setLiveParameters(live);
   const backend::ScopedThreadCount passThreads(s.threads);
   s.engine->uploadState(fluid);
@@ -209,6 +338,25 @@ void Simulation::loadState(std::istream& in) {
   s.fluidForceOnWall = std::move(fluidForceOnWall);
   s.emitters = std::move(emitters);
   *s.probes = std::move(probes);
+  if (hasObjects) {
+    s.objects->setPacing(objects.pacing);
+    s.objects->exchange().restore(std::move(objects.exchange));
+    s.engine->uploadContainment(objects.containment);
+    s.seenPublication = objects.seenPublication;
+    // The fluid keeps its own copy of the publication it read last: made again here when it is
+    // the newest. A newer one (the engine's step since) is read at the next step, as it would
+    // have been, before anything uses the fluid's copy.
+    if (objects.exchange.version == objects.seenPublication) {
+      std::uint64_t older = objects.seenPublication - 1;
+      s.objects->exchange().readIfNew(older, [&](const ObjectSurface& surface) {
+        s.engine->setObjectSurface(surface, s.interactionParams);
+      });
+    }
+    s.objectMaxSpeed = objects.objectMaxSpeed;
+    s.contactPairs = objects.contactPairs;
+    s.fluidForceOnObject = std::move(objects.fluidForceOnObject);
+    s.contactForceOnObject = std::move(objects.contactForceOnObject);
+  }
 }
 
 }  // namespace sph
