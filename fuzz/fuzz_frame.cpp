@@ -1,11 +1,13 @@
 // Any bytes as a frame of the format SPH_FUZZ_FILE names ("fuzz.vtp", "fuzz.ply", "fuzz.csv"),
-// as sph render reads them back: a frame or an InputError naming the file.
+// or as a run's frames.pvd ("fuzz.pvd"), as sph render reads them back: a frame (or the frames
+// listed) or an InputError naming the file.
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <string>
 
 #include "io/frame_reader.hpp"
+#include "io/pvd_reader.hpp"
 #include "sph/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -16,6 +18,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       sph::io::readVtp(bytes, file);
     else if (file.extension() == ".ply")
       sph::io::readPly(bytes, file);
+    else if (file.extension() == ".pvd")
+      sph::io::readPvd(bytes, file);
     else
       sph::io::readCsvFrame(bytes, file);
   } catch (const sph::InputError&) {

@@ -226,8 +226,10 @@ int renderCommand(const RenderOptions& options) {
   try {
     render::encodeVideo((images / "frame_%05d.png").string(), fps, video);
   } catch (const render::VideoError& e) {
+    // The images are written; the video, one of the results, is not: exit 4 like any output
+    // that could not be written.
     std::fprintf(stderr, "error: no video: %s\nthe images are in %s\n", e.what(), images.c_str());
-    return 1;
+    return kExitOutputFailed;
   }
   if (!options.quiet) std::printf("video:  %s (%g frames per second)\n", video.c_str(), fps);
   return kExitOk;

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "io/frame_reader_support.hpp"
+#include "io/pvd_reader.hpp"
 
 namespace sph::io {
 
@@ -66,9 +67,44 @@ ParticleFrame readFrame(const fs::path& file) {
   return readCsvFrame(bytes, file);
 }
 
+namespace {
+
+// The frames DIR/frames.pvd lists, in its order; each must be a frame file that exists.
+RunFrameFiles framesOfSeries(const fs::path& dir, const fs::path& pvd) {
+  constexpr std::uintmax_t kLargest = std::uintmax_t(256) << 20;  // 4 million frames
+  std::error_code error;
+  const std::uintmax_t size = fs::file_size(pvd, error);
+  if (!error && size > kLargest)
+    throw InputError(pvd.string() + ": is " + std::to_string(size) +
+                     " bytes; a collection over 256 MiB is refused");
+  RunFrameFiles files;
+  std::string extension;
+  for (const auto& [time, relative] : readPvd(readBytes(pvd), pvd)) {
+    const fs::path frame = dir / relative;
+    const std::string ext = frame.extension().string();
+    if (!isFrameExtension(ext))
+      throw InputError(pvd.string() + ": lists '" + relative + "', not a .vtp, .ply or .csv frame");
+    if (extension.empty()) extension = ext;
+    if (ext != extension)
+      throw InputError(pvd.string() + ": lists frames of two formats (" + extension + " and " +
+                       ext + "); expected one");
+    if (!fs::is_regular_file(frame, error))
+      throw InputError(pvd.string() + ": lists '" + relative + "', which is missing");
+    files.frames.push_back(frame);
+    files.times.push_back(time);
+  }
+  const fs::path boundary = dir / ("boundary" + extension);
+  if (fs::is_regular_file(boundary, error)) files.boundary = boundary;
+  return files;
+}
+
+}  // namespace
+
 RunFrameFiles listRunFrames(const fs::path& dir) {
   std::error_code error;
   if (!fs::is_directory(dir, error)) throw InputError(dir.string() + ": not a directory");
+  const fs::path pvd = dir / "frames.pvd";
+  if (fs::exists(pvd, error)) return framesOfSeries(dir, pvd);
   const fs::path framesDir = dir / "frames";
   if (!fs::is_directory(framesDir, error))
     throw InputError(framesDir.string() +

@@ -20,14 +20,18 @@ ParticleFrame readVtp(const std::string& bytes, const std::filesystem::path& fil
 ParticleFrame readPly(const std::string& bytes, const std::filesystem::path& file);
 ParticleFrame readCsvFrame(const std::string& text, const std::filesystem::path& file);
 
-// The frame files of a run directory (DIR/frames/frame_NNNNN.EXT, in frame order) and its walls
-// (DIR/boundary.EXT, written once; empty when the run has none).
+// The frame files of a run directory and its walls (DIR/boundary.EXT, written once; empty when
+// the run has none). The frames are those DIR/frames.pvd lists, in its order, with their
+// times, where the run wrote one (VTP); else DIR/frames/frame_NNNNN.EXT in frame order, times
+// unknown.
 struct RunFrameFiles {
   std::vector<std::filesystem::path> frames;
+  std::vector<double> times;  // s, from frames.pvd; empty without it
   std::filesystem::path boundary;
 };
 
-// Throws InputError when `dir` holds no frames, or frames of more than one format.
+// Throws InputError when `dir` holds no frames, or frames of more than one format, or a
+// frames.pvd that cannot be read or lists a frame that is missing, naming the file.
 RunFrameFiles listRunFrames(const std::filesystem::path& dir);
 
 }  // namespace sph::io

@@ -146,6 +146,39 @@ TEST_F(RunFramesTest, ListsFramesInNumberOrderWithTheBoundary) {
   EXPECT_EQ(files.boundary, dir_ / "boundary.ply");
 }
 
+// A run's frames.pvd decides which frames there are, in its order, with their times: a stray
+// frame file it does not list is left out, and one it lists that is gone is an error.
+TEST_F(RunFramesTest, TheSeriesListsTheFramesAndTheirTimes) {
+  fs::create_directories(dir_ / "frames");
+  for (const char* name : {"frame_00000.vtp", "frame_00001.vtp", "frame_00007.vtp"})
+    writeFrame(makeFrame(), FrameFormat::Vtp, dir_ / "frames" / name);
+  writeAll(
+      dir_ / "frames.pvd",
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+      "  <Collection>\n"
+      "    <DataSet timestep=\"0\" group=\"\" part=\"0\" file=\"frames/frame_00000.vtp\"/>\n"
+      "    <DataSet timestep=\"0.02\" group=\"\" part=\"0\" file=\"frames/frame_00001.vtp\"/>\n"
+      "  </Collection>\n</VTKFile>\n");
+  const RunFrameFiles files = listRunFrames(dir_);
+  ASSERT_EQ(files.frames.size(), 2u);
+  EXPECT_EQ(files.frames[1], dir_ / "frames" / "frame_00001.vtp");
+  EXPECT_EQ(files.times, (std::vector<double>{0.0, 0.02}));
+
+  fs::remove(dir_ / "frames" / "frame_00001.vtp");
+  try {
+    listRunFrames(dir_);
+    FAIL() << "a listed frame that is gone was not noticed";
+  } catch (const InputError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("frames.pvd: lists 'frames/frame_00001.vtp', which is missing"),
+        std::string::npos)
+        << e.what();
+  }
+  writeAll(dir_ / "frames.pvd",
+           "<VTKFile type=\"Collection\"><DataSet timestep=\"x\" file=\"a.vtp\"/>");
+  EXPECT_THROW(listRunFrames(dir_), InputError);
+}
+
 TEST_F(RunFramesTest, NoBoundaryWhenTheRunHasNoWalls) {
   fs::create_directories(dir_ / "frames");
   writeFrame(makeFrame(), FrameFormat::Vtp, dir_ / "frames" / "frame_00000.vtp");

@@ -1,5 +1,8 @@
 #include "io/pvd_series.hpp"
 
+#include "io/pvd_reader.hpp"
+#include "sph/error.hpp"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -90,6 +93,48 @@ TEST_F(PvdSeriesTest, FileNamesAreEscapedForXml) {
   series.add(0.5, "a&b\"c.vtp");
   EXPECT_EQ(dataSets(readAll(pvd)),
             (std::vector<std::pair<double, std::string>>{{0.5, "a&amp;b&quot;c.vtp"}}));
+}
+
+TEST_F(PvdSeriesTest, ReadsBackWhatItWrites) {
+  const fs::path pvd = dir_ / "run.pvd";
+  PvdSeries series(pvd);
+  series.add(0.0, "frames/frame_00000.vtp");
+  series.add(1.0 / 30.0, "frames/a&b.vtp");
+  EXPECT_EQ(readPvd(readAll(pvd), pvd),
+            (std::vector<std::pair<double, std::string>>{{0.0, "frames/frame_00000.vtp"},
+                                                         {1.0 / 30.0, "frames/a&b.vtp"}}));
+}
+
+// What a damaged or hostile collection holds is refused naming the file and what was wrong.
+TEST(PvdReader, RefusesWhatIsNotACollectionOfFramesBesideIt) {
+  const auto error = [](const std::string& bytes) {
+    try {
+      readPvd(bytes, "run/frames.pvd");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string head = "<VTKFile type=\"Collection\"><Collection>";
+  EXPECT_EQ(error(head + "<DataSet timestep='0.5' file='frames/f.vtp'/>"), "accepted");
+  EXPECT_NE(error("").find("run/frames.pvd: not a VTK collection"), std::string::npos);
+  EXPECT_NE(error(head).find("lists no DataSet"), std::string::npos);
+  EXPECT_NE(error(head + "<DataSet timestep=\"0\" file=\"f.vtp\"").find("not closed"),
+            std::string::npos);
+  EXPECT_NE(error(head + "<DataSet file=\"f.vtp\"/>").find("DataSet 1: expected a timestep"),
+            std::string::npos);
+  EXPECT_NE(error(head + "<DataSet timestep=\"soon\" file=\"f.vtp\"/>").find("not a number"),
+            std::string::npos);
+  EXPECT_NE(error(head + "<DataSet timestep=\"1e999\" file=\"f.vtp\"/>").find("not a number"),
+            std::string::npos);
+  for (const char* outside : {"/etc/passwd", "../other/f.vtp", "frames/../../f.vtp", ""})
+    EXPECT_NE(error(head + "<DataSet timestep=\"0\" file=\"" + outside + "\"/>")
+                  .find("not a file inside the collection's folder"),
+              std::string::npos)
+        << outside;
+  // An unknown entity is not guessed at.
+  EXPECT_NE(error(head + "<DataSet timestep=\"0\" file=\"a&nbsp;b.vtp\"/>").find("file"),
+            std::string::npos);
 }
 
 TEST_F(PvdSeriesTest, MissingDirectoryThrowsNamingThePath) {

@@ -75,7 +75,7 @@ TEST_F(RenderCli, RenderWritesImagesAndVideo) {
   // Odd sizes: the video pads them to even.
   const Result r = runSph("render " + run.string() + " --width 97 --height 61 --colour density");
   if (noOffscreenContext(r)) GTEST_SKIP() << r.output;
-  ASSERT_EQ(r.code, ffmpegOnPath() ? 0 : 1) << r.output;
+  ASSERT_EQ(r.code, ffmpegOnPath() ? 0 : 4) << r.output;
   for (const char* name : {"frame_00000.png", "frame_00001.png", "frame_00002.png"})
     EXPECT_EQ(pngSize(run / "images" / name), std::make_pair(97, 61)) << name;
   EXPECT_FALSE(fs::exists(run / "images" / "frame_00003.png"));
@@ -95,12 +95,32 @@ TEST_F(RenderCli, RunWithRenderEndsWithImages) {
   const Result r = runSph("run " + scene_.string() + " --out " + run.string() +
                           " --format ply --quiet --render");
   if (noOffscreenContext(r)) GTEST_SKIP() << r.output;
-  ASSERT_EQ(r.code, ffmpegOnPath() ? 0 : 1) << r.output;
+  ASSERT_EQ(r.code, ffmpegOnPath() ? 0 : 4) << r.output;
   EXPECT_EQ(pngSize(run / "images" / "frame_00002.png"), std::make_pair(1280, 720));
   EXPECT_TRUE(fs::exists(run / "frames" / "frame_00002.ply"));
   if (ffmpegOnPath()) {
     EXPECT_TRUE(fs::exists(run / "video.mp4"));
   }
+}
+
+// An encoder that fails leaves the images and says so, exiting 4 like any result that could
+// not be written.
+TEST_F(RenderCli, AFailingVideoEncoderExitsFourKeepingTheImages) {
+  const fs::path run = dir_ / "run";
+  ASSERT_EQ(runSph("run " + scene_.string() + " --out " + run.string() + " --quiet").code, 0);
+  const fs::path fakeBin = dir_ / "bin";
+  fs::create_directories(fakeBin);
+  std::ofstream(fakeBin / "ffmpeg") << "#!/bin/sh\necho 'disk full' >&2\nexit 1\n";
+  fs::permissions(fakeBin / "ffmpeg", fs::perms::owner_all);
+  const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+  setenv("PATH", (fakeBin.string() + ":" + path).c_str(), 1);
+  const Result r = runSph("render " + run.string() + " --width 32 --height 32 --quiet");
+  setenv("PATH", path.c_str(), 1);
+  if (noOffscreenContext(r)) GTEST_SKIP() << r.output;
+  EXPECT_EQ(r.code, 4) << r.output;
+  EXPECT_NE(r.output.find("no video: ffmpeg failed"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(run / "images" / "frame_00002.png"));
+  EXPECT_FALSE(fs::exists(run / "video.mp4"));
 }
 
 TEST_F(RenderCli, ShowsWallsAndGridWithoutVideo) {
