@@ -211,6 +211,13 @@ struct FailureDesc {
   double maxDensityError = 0.5;  // compression ρ/ρ0 - 1 past which the run stops as failed
 };
 
+// What a scene may make, checked before anything is: beyond them it is refused (0: no bound
+// but the machine's memory).
+struct LimitsDesc {
+  double maxParticles = 0.0;  // fluid and wall particles together
+  double maxMemoryGb = 0.0;   // the particles' memory, GB (1e9 bytes)
+};
+
 // Particle-based objects (Meteer 2011, §4.3, §7) for the built-in object engine (src/objects).
 enum class ObjectMotion { Rigid, Deformable, Kinematic };
 enum class ShapeKind { Box, Sphere, Capsule, Tube, Mesh };
@@ -319,6 +326,7 @@ struct Scene {
   std::vector<EmitterDesc> emitters;
   std::vector<OutletDesc> outlets;
   FailureDesc failure;
+  LimitsDesc limits;
 };
 
 }  // namespace sph

@@ -413,6 +413,13 @@ FailureDesc readFailure(const ObjectReader& in) {
   return failure;
 }
 
+LimitsDesc readLimits(const ObjectReader& in) {
+  LimitsDesc limits;
+  limits.maxParticles = in.number("max_particles", limits.maxParticles, kNonNegative);
+  limits.maxMemoryGb = in.number("max_memory_gb", limits.maxMemoryGb, kNonNegative);
+  return limits;
+}
+
 void checkWall(const ReadContext& context, const WallDesc& w, const std::string& path,
                const Scene& scene) {
   const double spacing = scene.fluid.spacing;
@@ -493,6 +500,7 @@ Scene parseScene(const json& document, const std::string& sourceName,
   scene.emitters = readEmitters(root);
   scene.outlets = readOutlets(root);
   scene.failure = readFailure(root.object("failure"));
+  scene.limits = readLimits(root.object("limits"));
   checkGeometry(context, scene);
   checkObjectNames(context, scene);
   checkWallNames(context, scene);

@@ -76,7 +76,8 @@ KeySchema buildSchema() {
                             vec3("direction"), vec3("corner"), vec3("edge1"), vec3("edge2"),
                             value("speed"), value("start"), value("end")}),
        arrayOf("outlets", {value("name"), vec3("min"), vec3("max")}),
-       object("failure", {value("max_density_error")})});
+       object("failure", {value("max_density_error")}),
+       object("limits", {value("max_particles"), value("max_memory_gb")})});
 }
 
 // Optimal string alignment distance: insertions, deletions, substitutions and swaps of two

@@ -259,6 +259,8 @@ json sceneToJson(const Scene& scene) {
          return out;
        }()},
       {"failure", {{"max_density_error", scene.failure.maxDensityError}}},
+      {"limits",
+       {{"max_particles", scene.limits.maxParticles}, {"max_memory_gb", scene.limits.maxMemoryGb}}},
   };
 }
 

@@ -122,14 +122,24 @@ double availableBytes() {
   return pages > 0 && pageSize > 0 ? double(pages) * double(pageSize) : HUGE_VAL;
 }
 
-void refuseIfTooLarge(const Scene& scene, double limit) {
+void refuseIfTooLarge(const Scene& scene, double machineBytes) {
   const SceneSize size = estimateSize(scene);
-  if (size.bytes <= limit) return;
-  throw InputError(scene.sourcePath + ": fluid.spacing: the scene would make " +
-                   describeCount(size.fluidParticles) + " fluid and " +
-                   describeCount(size.wallParticles) + " wall particles, about " +
-                   describeBytes(size.bytes) + " of memory, more than this machine's " +
-                   describeBytes(limit) + "; expected a larger spacing or smaller blocks");
+  const std::string makes = "the scene would make " + describeCount(size.fluidParticles) +
+                            " fluid and " + describeCount(size.wallParticles) +
+                            " wall particles, about " + describeBytes(size.bytes) + " of memory";
+  const LimitsDesc& limits = scene.limits;
+  if (limits.maxParticles > 0.0 && size.fluidParticles + size.wallParticles > limits.maxParticles)
+    throw InputError(scene.sourcePath + ": limits.max_particles: " + makes + ", more than the " +
+                     describeCount(limits.maxParticles) +
+                     " particles it allows; expected a larger spacing, smaller blocks or a "
+                     "higher limit");
+  if (limits.maxMemoryGb > 0.0 && size.bytes > 1e9 * limits.maxMemoryGb)
+    throw InputError(scene.sourcePath + ": limits.max_memory_gb: " + makes + ", more than the " +
+                     describeBytes(1e9 * limits.maxMemoryGb) +
+                     " it allows; expected a larger spacing, smaller blocks or a higher limit");
+  if (size.bytes <= machineBytes) return;
+  throw InputError(scene.sourcePath + ": fluid.spacing: " + makes + ", more than this machine's " +
+                   describeBytes(machineBytes) + "; expected a larger spacing or smaller blocks");
 }
 
 }  // namespace sph::sim

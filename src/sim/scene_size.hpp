@@ -20,8 +20,8 @@ SceneSize estimateSize(const Scene& scene);
 // The memory the process may count on: the machine's physical memory.
 double availableBytes();
 
-// Throws InputError naming the scene file, the particle count and the memory when the scene
-// needs more than `limit` bytes.
-void refuseIfTooLarge(const Scene& scene, double limit);
+// Throws InputError naming the scene file, the key, the particle count and the memory when the
+// scene needs more than `machineBytes`, or more than its `limits` allow.
+void refuseIfTooLarge(const Scene& scene, double machineBytes);
 
 }  // namespace sph::sim

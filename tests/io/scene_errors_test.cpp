@@ -162,6 +162,7 @@ TEST(SceneErrors, ValuesOutOfRange) {
        "output.format: expected one of \"vtp\", \"ply\", \"csv\", "
        "\"none\", got \"vtk\""},
       {"/failure/max_density_error", -0.1, "failure.max_density_error: expected a positive"},
+      {"/limits/max_particles", -1, "limits.max_particles: expected a non-negative number"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.pointer);

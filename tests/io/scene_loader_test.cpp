@@ -138,6 +138,8 @@ TEST(SceneLoader, CompleteSceneSetsEveryField) {
   EXPECT_EQ(scene.probes[3].wall, "crate");
   EXPECT_EQ(scene.probes[3].object, "");
   EXPECT_EQ(scene.failure.maxDensityError, 0.2);
+  EXPECT_EQ(scene.limits.maxParticles, 2e6);
+  EXPECT_EQ(scene.limits.maxMemoryGb, 4.0);
 }
 
 TEST(SceneLoader, AbsentKeysTakeTheDefaultsOfSceneHpp) {

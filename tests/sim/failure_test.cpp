@@ -74,6 +74,24 @@ TEST(Failure, ASceneLargerThanTheMachineIsRefusedBeforeAnythingIsMade) {
   }
   EXPECT_NO_THROW(sim::refuseIfTooLarge(testing::restingTank(0.01, 0.1, 0.1), 1e7));
   EXPECT_THROW(sim::refuseIfTooLarge(testing::restingTank(0.01, 0.1, 0.1), 1e5), InputError);
+  // The scene's own limits, below the machine's: 1,000 fluid particles and their walls.
+  Scene limited = testing::restingTank(0.01, 0.1, 0.1);
+  limited.limits.maxParticles = 1000;
+  const auto refusal = [&] {
+    try {
+      sim::refuseIfTooLarge(limited, 1e12);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refusal().find("limits.max_particles: the scene would make 1e+03 fluid"),
+            std::string::npos)
+      << refusal();
+  limited.limits.maxParticles = 1e5;
+  EXPECT_EQ(refusal(), "accepted");
+  limited.limits.maxMemoryGb = 1e-4;  // 100 kB
+  EXPECT_NE(refusal().find("limits.max_memory_gb"), std::string::npos) << refusal();
   // An emitter's particles count for what it puts in over the run, up to what the domain holds.
   Scene pumped = testing::restingTank(0.01, 0.1, 0.1);
   EmitterDesc e;
