@@ -214,7 +214,7 @@ struct FailureDesc {
 // What a scene may make, checked before anything is: beyond them it is refused (0: no bound
 // but the machine's memory).
 struct LimitsDesc {
-  double maxParticles = 0.0;  // fluid and wall particles together
+  double maxParticles = 0.0;  // fluid, wall and object particles together
   double maxMemoryGb = 0.0;   // the particles' memory, GB (1e9 bytes)
 };
 

@@ -42,7 +42,7 @@ EmitterDesc readEmitter(const ObjectReader& in, std::size_t index) {
   }
   if (!in.has("speed"))
     in.context().fail(in.keyPath("speed"), "required key is missing (a speed in m/s)");
-  e.speed = in.number("speed", e.speed, kPositive);
+  e.speed = in.number("speed", e.speed, kSpeed);
   e.start = in.number("start", e.start, kNonNegative);
   e.end = in.number("end", e.end, kPositive);
   return e;

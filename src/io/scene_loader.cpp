@@ -59,7 +59,7 @@ DfsphDesc readDfsph(const ObjectReader& in) {
 
 FluidDesc readFluid(const ObjectReader& in) {
   FluidDesc fluid;
-  fluid.restDensity = in.number("rest_density", fluid.restDensity, kPositive);
+  fluid.restDensity = in.number("rest_density", fluid.restDensity, kDensity);
   fluid.spacing = in.number("spacing", fluid.spacing, kSpacing);
   fluid.supportRatio = in.number("support_ratio", fluid.supportRatio, kSupportRatio);
   fluid.solver = in.choice("solver", fluid.solver, kSolverNames);
@@ -72,16 +72,16 @@ FluidDesc readFluid(const ObjectReader& in) {
   fluid.densityDiffusion = in.number("density_diffusion", fluid.densityDiffusion, kDiffusion);
   readViscosity(in.object("viscosity"), fluid);
   const ObjectReader tension = in.object("surface_tension");
-  fluid.surfaceTension = tension.number("coefficient", fluid.surfaceTension, kNonNegative);
+  fluid.surfaceTension = tension.number("coefficient", fluid.surfaceTension, kSurfaceTension);
   fluid.surfaceThreshold = tension.optionalNumber("threshold", kPositive);
   for (const ObjectReader& blockIn : in.objectArray("blocks", /*required=*/true,
                                                     /*nonEmpty=*/true)) {
     FluidBlock block;
     block.box = readBox(blockIn);
-    block.velocity = blockIn.vec3("velocity", block.velocity);
+    block.velocity = blockIn.vec3("velocity", block.velocity, kLargestVelocity);
     block.hydrostatic = blockIn.boolean("hydrostatic", block.hydrostatic);
     block.inside = blockIn.string("inside", block.inside);
-    block.angularVelocity = blockIn.vec3("angular_velocity", block.angularVelocity);
+    block.angularVelocity = blockIn.vec3("angular_velocity", block.angularVelocity, kLargestSpin);
     fluid.blocks.push_back(block);
   }
   return fluid;
@@ -172,9 +172,9 @@ ShapeDesc readShape(const ObjectReader& in) {
   ShapeDesc shape;
   shape.kind = in.choice("type", shape.kind, kShapeNames);
   shape.center = in.vec3("center", shape.center);
-  shape.halfExtents = in.vec3("half_extents", shape.halfExtents);
-  shape.radius = in.number("radius", shape.radius, kNonNegative);
-  shape.length = in.number("length", shape.length, kNonNegative);
+  shape.halfExtents = in.vec3("half_extents", shape.halfExtents, kLength.hi);
+  shape.radius = in.number("radius", shape.radius, kLength);
+  shape.length = in.number("length", shape.length, kLength);
   shape.axis = in.vec3("axis", shape.axis);
   shape.capped = in.boolean("capped", shape.capped);
   shape.meshFile = in.string("file", shape.meshFile);
@@ -207,14 +207,14 @@ std::vector<ObjectDesc> readObjects(const ObjectReader& root) {
     o.name = in.string("name", "object" + std::to_string(objects.size()));
     o.motion = in.choice("motion", o.motion, kMotionNames);
     o.shape = readShape(in.requiredObject("shape"));
-    o.density = in.number("density", o.density, kPositive);
+    o.density = in.number("density", o.density, kDensity);
     o.spacing = in.number("spacing", o.spacing, kNonNegative);
     if (o.spacing != 0.0 && !kSpacing.accepts(o.spacing))
       in.context().fail(in.keyPath("spacing"), "expected 0 (the fluid's) or " +
                                                    kSpacing.describe() + ", got " +
                                                    formatNumber(o.spacing));
-    o.velocity = in.vec3("velocity", o.velocity);
-    o.angularVelocity = in.vec3("angular_velocity", o.angularVelocity);
+    o.velocity = in.vec3("velocity", o.velocity, kLargestVelocity);
+    o.angularVelocity = in.vec3("angular_velocity", o.angularVelocity, kLargestSpin);
     o.deformable = readDeformable(in.object("deformable"));
     for (const ObjectReader& key : in.objectArray("keyframes", false, false)) {
       KeyframeDesc k;
@@ -361,8 +361,8 @@ void checkCoupling(const ReadContext& context, const Scene& scene) {
 CalibrationDesc readCalibration(const ObjectReader& in) {
   CalibrationDesc calibration;
   calibration.mass = in.optionalNumber("mass", kPositive);
-  calibration.maxExpectedSpeed = in.optionalNumber("max_expected_speed", kPositive);
-  calibration.speedOfSound = in.optionalNumber("speed_of_sound", kPositive);
+  calibration.maxExpectedSpeed = in.optionalNumber("max_expected_speed", kSpeed);
+  calibration.speedOfSound = in.optionalNumber("speed_of_sound", NumberRule{0, 1e5, true, false});
   calibration.stiffness = in.optionalNumber("stiffness", kPositive);
   return calibration;
 }
@@ -487,7 +487,7 @@ Scene parseScene(const json& document, const std::string& sourceName,
                              scene.name + "\"");
   scene.description = root.string("description", scene.description);
   scene.domain = readDomain(root.requiredObject("domain"));
-  scene.gravity = root.vec3("gravity", scene.gravity);
+  scene.gravity = root.vec3("gravity", scene.gravity, kLargestAcceleration);
   scene.fluid = readFluid(root.requiredObject("fluid"));
   scene.walls = readWalls(root);
   scene.objects = readObjects(root);

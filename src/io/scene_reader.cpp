@@ -161,23 +161,27 @@ int ObjectReader::integer(const std::string& key, int fallback, int lo, int hi) 
                                    std::to_string(hi) + "], got " + describeValue(*value));
 }
 
-Vec3d ObjectReader::checkedVec3(const json& value, const std::string& key) const {
+Vec3d ObjectReader::checkedVec3(const json& value, const std::string& key, double largest) const {
   bool ok = value.is_array() && value.size() == 3;
   for (std::size_t i = 0; ok && i < 3; ++i) {
     ok = value[i].is_number() && std::isfinite(value[i].get<double>());
   }
   if (!ok)
     context_->fail(keyPath(key), "expected an array of 3 numbers, got " + describeValue(value));
+  for (std::size_t i = 0; i < 3; ++i)
+    if (!(std::abs(value[i].get<double>()) <= largest))
+      context_->fail(keyPath(key), "expected 3 numbers within ±" + formatNumber(largest) +
+                                       ", got " + describeValue(value));
   return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
 }
 
-Vec3d ObjectReader::vec3(const std::string& key, const Vec3d& fallback) const {
+Vec3d ObjectReader::vec3(const std::string& key, const Vec3d& fallback, double largest) const {
   const json* value = find(key);
-  return value == nullptr ? fallback : checkedVec3(*value, key);
+  return value == nullptr ? fallback : checkedVec3(*value, key, largest);
 }
 
-Vec3d ObjectReader::requiredVec3(const std::string& key) const {
-  return checkedVec3(require(key), key);
+Vec3d ObjectReader::requiredVec3(const std::string& key, double largest) const {
+  return checkedVec3(require(key), key, largest);
 }
 
 }  // namespace sph::io

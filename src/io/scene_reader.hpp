@@ -67,6 +67,18 @@ inline constexpr NumberRule kDuration{0, 1e6, true, false};
 inline constexpr NumberRule kFrameRate{0, 1e5, true, false};
 inline constexpr NumberRule kSampleRate{0, 1e7, true, false};
 inline constexpr NumberRule kScale{0, 1e3, true, false};  // a mesh's, on coordinates ≤ 1e6
+// Densities from a light gas's to past osmium's, kg/m³; speeds and sizes far past any scene's
+// and short of those that overflow a step or a particle count.
+inline constexpr NumberRule kDensity{1e-3, 1e5, false, false};
+inline constexpr NumberRule kSpeed{0, 1e4, true, false};            // m/s
+inline constexpr NumberRule kLength{0, 1e4, false, false};          // an object's size, m
+inline constexpr NumberRule kSurfaceTension{0, 100, false, false};  // N/m (water: 0.072)
+// The largest magnitude of a vector's coordinates: positions (as a mesh's vertices), velocities
+// (m/s), angular velocities (rad/s) and accelerations (m/s², gravity's up to 1,000 g).
+inline constexpr double kLargestCoordinate = 1e6;
+inline constexpr double kLargestVelocity = 1e4;
+inline constexpr double kLargestSpin = 1e4;
+inline constexpr double kLargestAcceleration = 1e4;
 
 // Reads the keys of one JSON object. Constructing it checks that the value is an object and
 // that every key in it is in the schema. A reader of an absent object gives every default.
@@ -92,8 +104,10 @@ class ObjectReader {
   // Absent or null gives nullopt.
   std::optional<double> optionalNumber(const std::string& key, const NumberRule& rule) const;
   int integer(const std::string& key, int fallback, int lo, int hi) const;
-  Vec3d vec3(const std::string& key, const Vec3d& fallback) const;
-  Vec3d requiredVec3(const std::string& key) const;
+  // Each coordinate at most `largest` in magnitude.
+  Vec3d vec3(const std::string& key, const Vec3d& fallback,
+             double largest = kLargestCoordinate) const;
+  Vec3d requiredVec3(const std::string& key, double largest = kLargestCoordinate) const;
 
   template <class Enum, std::size_t N>
   Enum choice(const std::string& key, Enum fallback, const NamedValue<Enum> (&names)[N]) const;
@@ -103,7 +117,7 @@ class ObjectReader {
   const nlohmann::json& require(const std::string& key) const;
   double checkedNumber(const nlohmann::json& value, const std::string& key, const NumberRule& rule,
                        const char* orWhat) const;
-  Vec3d checkedVec3(const nlohmann::json& value, const std::string& key) const;
+  Vec3d checkedVec3(const nlohmann::json& value, const std::string& key, double largest) const;
 
   const ReadContext* context_;
   const nlohmann::json* object_;

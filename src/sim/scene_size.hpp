@@ -10,9 +10,10 @@
 namespace sph::sim {
 
 struct SceneSize {
-  double fluidParticles = 0.0;  // at most: the blocks' lattices before walls and objects clip them
-  double wallParticles = 0.0;   // at most, meshes left out (their size is known once read)
-  double bytes = 0.0;           // the engine's arrays for both
+  double fluidParticles = 0.0;   // at most: the blocks' lattices before walls and objects clip them
+  double wallParticles = 0.0;    // at most, meshes left out (their size is known once read)
+  double objectParticles = 0.0;  // at most, meshes left out
+  double bytes = 0.0;            // the engine's arrays for both
 };
 
 SceneSize estimateSize(const Scene& scene);

@@ -27,6 +27,13 @@ namespace {
 
 using Result = sph::testing::CommandResult;
 
+// Under the sanitizers (a tenth of the speed) the runs are shorter: they check the same steps.
+#ifdef SPH_TESTS_SANITIZED
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+
 Result runSph(const std::string& arguments) {
   return sph::testing::runSph(arguments, "sph_checkpoint_");
 }
@@ -142,27 +149,36 @@ void Checkpoints::killAndResume(const std::string& scene, double every, int fram
 
 // Walls, an emitter, an outlet and probes.
 TEST_F(Checkpoints, AKilledRunResumesToTheSameBytes) {
-  killAndResume(pipe() + " --duration 1.2", 0.1, 5, 60);
+  if (kSanitized)
+    killAndResume(pipe() + " --duration 0.3", 0.1, 5, 15);
+  else
+    killAndResume(pipe() + " --duration 1.2", 0.1, 5, 60);
 }
 
 // The artery squeezed: a deformable vessel, the clamps, leak tracking, and the object engine in
 // its own thread.
 TEST_F(Checkpoints, AKilledRunWithObjectsResumesToTheSameBytes) {
-  killAndResume(std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json --duration 0.12 --fps 100",
-                0.01, 1, 12);
+  const std::string artery = std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json --fps 100";
+  if (kSanitized)
+    killAndResume(artery + " --duration 0.04", 0.01, 1, 4);
+  else
+    killAndResume(artery + " --duration 0.12", 0.01, 1, 12);
 }
 
 TEST_F(Checkpoints, AFinishedRunExtendsWithALongerDuration) {
   const fs::path whole = dir_ / "whole", extended = dir_ / "extended";
-  ASSERT_EQ(runSph("run " + pipe() + " --duration 0.4 --quiet --out " + whole.string()).code, 0);
-  ASSERT_EQ(runSph("run " + pipe() + " --duration 0.2 --checkpoint-every 0.2 --quiet --out " +
-                   extended.string())
+  const std::string end = kSanitized ? "0.2" : "0.4", half = kSanitized ? "0.1" : "0.2";
+  ASSERT_EQ(
+      runSph("run " + pipe() + " --duration " + end + " --quiet --out " + whole.string()).code, 0);
+  ASSERT_EQ(runSph("run " + pipe() + " --duration " + half + " --checkpoint-every " + half +
+                   " --quiet --out " + extended.string())
                 .code,
             0);
   const Result same = runSph("run --resume " + extended.string() + " --quiet");
   EXPECT_EQ(same.code, 2) << same.output;
   EXPECT_NE(same.output.find("time.duration"), std::string::npos) << same.output;
-  const Result longer = runSph("run --resume " + extended.string() + " --duration 0.4 --quiet");
+  const Result longer =
+      runSph("run --resume " + extended.string() + " --duration " + end + " --quiet");
   ASSERT_EQ(longer.code, 0) << longer.output;
   expectSameRun(whole, extended);
 }

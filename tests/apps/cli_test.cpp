@@ -3,6 +3,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -164,6 +168,32 @@ TEST_F(Cli, BadInputExitsTwoNamingFileAndKey) {
   EXPECT_EQ(threads.code, 2);
   EXPECT_NE(threads.output.find("--threads"), std::string::npos) << threads.output;
   EXPECT_NE(threads.output.find("1024"), std::string::npos) << threads.output;
+}
+
+// A scene far larger than the machine is refused before anything large is made: the process
+// stays small (its own peak resident memory, from wait4), where building it would take
+// terabytes.
+TEST_F(Cli, AnOverLargeSceneExitsTwoBeforeAllocating) {
+  for (const char* verb : {"validate", "run"}) {
+    const std::string command =
+        std::string(SPH_BINARY) + " " + verb + " " + scene_.string() +
+        " --set fluid.spacing=0.000002 " +
+        (std::string(verb) == "run" ? "--out " + (dir_ / "huge").string() : std::string()) +
+        " > /dev/null 2>&1";
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      execl("/bin/sh", "sh", "-c", ("exec " + command).c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    int status = 0;
+    rusage usage{};
+    ASSERT_EQ(wait4(child, &status, 0, &usage), child);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 2) << verb;
+    EXPECT_LT(usage.ru_maxrss, 200 * 1024) << verb << ": peak resident memory in kB";
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "huge" / "stats.csv"));
 }
 
 // Results that cannot be written are neither bad input nor a failed simulation.

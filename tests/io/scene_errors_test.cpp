@@ -98,7 +98,7 @@ TEST(SceneErrors, ValuesOutOfRange) {
       {"/domain/outside", "wrap", "domain.outside: expected one of \"remove\", \"clamp\""},
       {"/domain/damped_box", "yes", "domain.damped_box: expected true or false, got \"yes\""},
       {"/domain/damping", 1.5, "domain.damping: expected a number in [0, 1], got 1.5"},
-      {"/fluid/rest_density", 0, "fluid.rest_density: expected a positive number, got 0"},
+      {"/fluid/rest_density", 0, "fluid.rest_density: expected a number in [0.001, 100000], got 0"},
       {"/fluid/support_ratio", 5, "fluid.support_ratio: expected a number in [1, 4], got 5"},
       {"/fluid/support_ratio", 0.5, "fluid.support_ratio: expected a number in [1, 4], got 0.5"},
       {"/fluid/eos", "ideal_gas", "fluid.eos: expected one of \"linear\", \"ratio\", \"tait\""},
@@ -136,8 +136,10 @@ TEST(SceneErrors, ValuesOutOfRange) {
       {"/interaction/coupling", "glue",
        "interaction.coupling: expected one of \"contact\", \"boundary\", got \"glue\""},
       {"/calibration/mass", -1, "calibration.mass: expected a positive number or null, got -1"},
-      {"/calibration/max_expected_speed", 0, "calibration.max_expected_speed: expected a pos"},
-      {"/calibration/speed_of_sound", "fast", "calibration.speed_of_sound: expected a positive"},
+      {"/calibration/max_expected_speed", 0,
+       "calibration.max_expected_speed: expected a number in (0, 10000] or null, got 0"},
+      {"/calibration/speed_of_sound", "fast",
+       "calibration.speed_of_sound: expected a number in (0, 100000] or null"},
       {"/calibration/stiffness", false, "calibration.stiffness: expected a positive number or"},
       {"/time/duration", -2, "time.duration: expected a number in (0, 1000000], got -2"},
       {"/time/cfl", 0, "time.cfl: expected a number in (0, 1], got 0"},
@@ -163,6 +165,18 @@ TEST(SceneErrors, ValuesOutOfRange) {
        "\"none\", got \"vtk\""},
       {"/failure/max_density_error", -0.1, "failure.max_density_error: expected a positive"},
       {"/limits/max_particles", -1, "limits.max_particles: expected a non-negative number"},
+      // Values past any physical scene, that once failed at step 0 (exit 3) or hung.
+      {"/fluid/rest_density", 1e300, "fluid.rest_density: expected a number in [0.001, 100000]"},
+      {"/gravity", json::array({0, -1e308, 0}),
+       "gravity: expected 3 numbers within ±10000, got [0,-1e+308,0]"},
+      {"/fluid/blocks/0/velocity", json::array({1e30, 0, 0}),
+       "fluid.blocks[0].velocity: expected 3 numbers within ±10000"},
+      {"/objects/0/velocity", json::array({0, 0, 1e5}),
+       "objects[0].velocity: expected 3 numbers within ±10000"},
+      {"/objects/0/density", 0, "objects[0].density: expected a number in [0.001, 100000]"},
+      {"/objects/0/shape/radius", 1e6, "objects[0].shape.radius: expected a number in [0, 10000]"},
+      {"/domain/max", json::array({1e7, 1, 1}), "domain.max: expected 3 numbers within ±1000000"},
+      {"/emitters/0/speed", 1e5, "emitters[0].speed: expected a number in (0, 10000]"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.pointer);
@@ -312,7 +326,7 @@ TEST(SceneErrors, BadEmittersAndOutletsNameTheKey) {
   EXPECT_EQ(parseError(without(completeSceneJson(), "/emitters/0/speed")),
             "scenes/x.json: emitters[0].speed: required key is missing (a speed in m/s)");
   EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/0/speed", 0)),
-            "scenes/x.json: emitters[0].speed: expected a positive number, got 0");
+            "scenes/x.json: emitters[0].speed: expected a number in (0, 10000], got 0");
   EXPECT_EQ(parseError(with(completeSceneJson(), "/emitters/0/edge1", {0, 1, 0})),
             "scenes/x.json: emitters[0].edge1: not a key of a disc emitter; its keys are name, "
             "shape, speed, start, end, center, radius, direction");

@@ -3,6 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
 namespace sph::io {
 namespace {
 
@@ -48,6 +53,52 @@ TEST(SceneSchema, EnumerationNames) {
   EXPECT_STREQ(nameOf(KernelKind::CubicSpline, kKernelNames), "cubic_spline");
   EXPECT_STREQ(nameOf(FrameFormat::None, kFormatNames), "none");
   EXPECT_STREQ(nameOf(EquationOfState::Tait, kEosNames), "tait");
+}
+
+void collectNames(const KeySchema& key, std::set<std::string>& names) {
+  if (!key.name.empty() && key.name != "[]") names.insert(key.name);
+  for (const KeySchema& child : key.children) collectNames(child, names);
+}
+
+// Every name written as a key ("name": ...) in the README's scene reference (its jsonc block),
+// comments left out.
+std::set<std::string> readmeReferenceKeys() {
+  std::ifstream in(std::string(SPH_SOURCE_DIR) + "/README.md");
+  std::string line;
+  bool inside = false;
+  std::set<std::string> keys;
+  while (std::getline(in, line)) {
+    if (!inside) {
+      inside = line.rfind("```jsonc", 0) == 0;
+      continue;
+    }
+    if (line.rfind("```", 0) == 0) break;
+    const std::size_t comment = line.find("//");
+    if (comment != std::string::npos) line.erase(comment);
+    for (std::size_t at = line.find('"'); at != std::string::npos; at = line.find('"', at + 1)) {
+      const std::size_t end = line.find('"', at + 1);
+      if (end == std::string::npos) break;
+      std::size_t next = end + 1;
+      while (next < line.size() && line[next] == ' ') ++next;
+      if (next < line.size() && line[next] == ':') keys.insert(line.substr(at + 1, end - at - 1));
+      at = end;
+    }
+  }
+  return keys;
+}
+
+// The README's reference of every key and the schema the loader reads by name the same keys: a
+// key added to one and not the other fails here.
+TEST(SceneSchema, TheReadmeReferenceNamesEveryKeyAndNoOther) {
+  std::set<std::string> schema;
+  collectNames(sceneSchema(), schema);
+  const std::set<std::string> readme = readmeReferenceKeys();
+  ASSERT_FALSE(readme.empty()) << "no ```jsonc block in README.md";
+  for (const std::string& key : schema)
+    EXPECT_TRUE(readme.count(key)) << "the README's scene reference does not show " << key;
+  for (const std::string& key : readme)
+    EXPECT_TRUE(schema.count(key))
+        << "the README's scene reference shows " << key << ", which no scene reads";
 }
 
 }  // namespace

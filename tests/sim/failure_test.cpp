@@ -92,6 +92,19 @@ TEST(Failure, ASceneLargerThanTheMachineIsRefusedBeforeAnythingIsMade) {
   EXPECT_EQ(refusal(), "accepted");
   limited.limits.maxMemoryGb = 1e-4;  // 100 kB
   EXPECT_NE(refusal().find("limits.max_memory_gb"), std::string::npos) << refusal();
+  // Objects count too: a sphere a kilometre across sampled at a centimetre.
+  Scene huge = testing::restingTank(0.01, 0.1, 0.1);
+  ObjectDesc ball;
+  ball.shape.kind = ShapeKind::Sphere;
+  ball.shape.radius = 500.0;
+  huge.objects.push_back(ball);
+  try {
+    sim::refuseIfTooLarge(huge, 1e10);
+    FAIL() << "a sphere of 1e10 particles passed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(": objects: the scene would make"), std::string::npos)
+        << e.what();
+  }
   // An emitter's particles count for what it puts in over the run, up to what the domain holds.
   Scene pumped = testing::restingTank(0.01, 0.1, 0.1);
   EmitterDesc e;
