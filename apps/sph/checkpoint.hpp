@@ -12,29 +12,10 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "checkpoint_file.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::cli {
-
-// Where the run's outputs stood when the checkpoint was taken.
-struct RunPosition {
-  int frame = 0;  // the index of the last frame written
-  std::uintmax_t statsBytes = 0;
-  std::uintmax_t probesBytes = 0;                      // 0: no probes.csv yet
-  std::vector<std::pair<double, std::string>> series;  // frames.pvd: time, file
-};
-
-struct Checkpoint {
-  std::filesystem::path file;
-  std::string sceneFile;  // where the scene was read from, for messages
-  nlohmann::json scene;   // resolved (io::sceneToJson)
-  double checkpointEvery = 0.0;
-  double time = 0.0;  // simulated, s
-  RunPosition position;
-  std::string state;  // Simulation::saveState's bytes
-};
 
 std::filesystem::path checkpointDir(const std::filesystem::path& runDir);
 
