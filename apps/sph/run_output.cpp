@@ -72,8 +72,9 @@ RunOutput::RunOutput(fs::path dir, FrameFormat format, std::vector<std::string> 
   for (fs::directory_iterator it(dir_ / "frames", error), end; !error && it != end;
        it.increment(error)) {
     const std::string name = it->path().filename().string();
-    int index = -1;
-    if (name.rfind("frame_", 0) == 0 && name.size() > 11) index = std::atoi(name.c_str() + 6);
+    long index = -1;  // strtol, not atoi: a stray name of many digits saturates
+    if (name.rfind("frame_", 0) == 0 && name.size() > 11)
+      index = std::strtol(name.c_str() + 6, nullptr, 10);
     const bool temporary = it->path().extension() == ".tmp";
     if (temporary || index > position.frame) {
       std::error_code removeError;
