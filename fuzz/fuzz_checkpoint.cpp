@@ -7,26 +7,14 @@
 #include <string>
 
 #include "checkpoint_file.hpp"
+#include "sim/state_stream.hpp"
 #include "sph/error.hpp"
-
-namespace {
-
-std::uint64_t fnv1a(const char* data, std::size_t n) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (std::size_t k = 0; k < n; ++k) {
-    hash ^= static_cast<unsigned char>(data[k]);
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
-
-}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string bytes(reinterpret_cast<const char*>(data), size);
   constexpr std::size_t kParts = 24;  // magic and the two lengths
   if (bytes.size() >= kParts + 8) {
-    const std::uint64_t sum = fnv1a(bytes.data() + kParts, bytes.size() - kParts - 8);
+    const std::uint64_t sum = sph::sim::fnv1a(bytes.data() + kParts, bytes.size() - kParts - 8);
     std::memcpy(bytes.data() + bytes.size() - 8, &sum, sizeof sum);
   }
   try {

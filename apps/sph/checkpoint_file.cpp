@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "sim/state_stream.hpp"
 #include "sph/error.hpp"
 
 #ifndef SPH_VERSION
@@ -15,16 +16,6 @@ namespace {
 
 constexpr char kMagic[8] = {'S', 'P', 'H', 'C', 'H', 'E', 'C', 'K'};
 constexpr std::size_t kFixedBytes = sizeof kMagic + 3 * sizeof(std::uint64_t);
-constexpr std::uint64_t kFnvStart = 14695981039346656037ull;
-
-std::uint64_t fnv1a(std::uint64_t hash, const char* data, std::size_t n) {
-  for (std::size_t k = 0; k < n; ++k) {
-    hash ^= static_cast<unsigned char>(data[k]);
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
-
 void appendWord(std::string& out, std::uint64_t v) {
   out.append(reinterpret_cast<const char*>(&v), sizeof v);
 }
@@ -64,8 +55,8 @@ std::string checkpointBytes(const nlohmann::json& header, const std::string& sta
   appendWord(out, state.size());
   out += headerText;
   out += state;
-  appendWord(out, fnv1a(fnv1a(kFnvStart, headerText.data(), headerText.size()), state.data(),
-                        state.size()));
+  appendWord(out, sim::fnv1a(state.data(), state.size(),
+                             sim::fnv1a(headerText.data(), headerText.size())));
   return out;
 }
 
@@ -80,7 +71,7 @@ Checkpoint parseCheckpoint(const std::string& bytes, const std::filesystem::path
   const char* header = bytes.data() + sizeof kMagic + 16;
   const char* state = header + headerBytes;
   const std::uint64_t checksum = wordAt(bytes, bytes.size() - 8);
-  if (fnv1a(fnv1a(kFnvStart, header, headerBytes), state, stateBytes) != checksum)
+  if (sim::fnv1a(state, stateBytes, sim::fnv1a(header, headerBytes)) != checksum)
     refuse(file, "corrupted: its checksum does not match its contents");
 
   Checkpoint c;

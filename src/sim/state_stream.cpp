@@ -18,8 +18,7 @@ struct Header {
 
 }  // namespace
 
-std::uint64_t fnv1a(const char* data, std::size_t n) {
-  std::uint64_t hash = 14695981039346656037ull;
+std::uint64_t fnv1a(const char* data, std::size_t n, std::uint64_t hash) {
   for (std::size_t k = 0; k < n; ++k) {
     hash ^= static_cast<unsigned char>(data[k]);
     hash *= 1099511628211ull;
