@@ -84,6 +84,9 @@ struct DomainDesc {
   // Reflect at the domain faces, velocity scaled by -damping (the 2021 CUDA SPH tutorial).
   bool dampedBox = false;
   double damping = 0.5;
+  // Axes (x, y, z) along which the domain's two faces are one: what leaves through one enters
+  // through the other, and the fluid near one face feels the fluid and walls near the other.
+  std::array<bool, 3> periodic{false, false, false};
 };
 
 // The incompressible solver (fluid.solver "dfsph"; Bender & Koschier 2015): when its two

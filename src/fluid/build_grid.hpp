@@ -91,7 +91,9 @@ std::size_t buildGrid(FluidParticles<B>& fluid, Grid<B>& grid, const DomainParam
         return detail::Bounds{p, p, detail::kept(domain, p)};
       },
       SPH_LAMBDA(const detail::Bounds& a, const detail::Bounds& b) { return detail::merge(a, b); });
-  grid.spec = bounds.any ? makeGrid(bounds.lo, bounds.hi, grid.cellSize)
+  const Periodicity& periodic = domain.periodic;
+  grid.spec = bounds.any ? makePeriodicGrid(bounds.lo, bounds.hi, grid.cellSize, periodic.axes,
+                                            periodic.lo, periodic.hi)
                          : makeGrid(domain.min, domain.min, grid.cellSize);
   const GridSpec spec = grid.spec;
   const std::uint32_t outsideBin = spec.cellCount;

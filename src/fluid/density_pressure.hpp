@@ -38,11 +38,13 @@ void densityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
   B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const Vec3 xi = xyz(position[i]);
+        const bool seam = nearSeam(p.periodic, xi);
         float sum = 0.0f, wallSum = 0.0f;  // Meteer 2011, eq. 4, self included; walls' volumes
         std::uint32_t* list = neighbors + i * stride;
         std::uint32_t count = 0;
         forEachNeighbor(spec, cellStart, xi, [&](std::uint32_t j) {
-          const float r2 = lengthSquared(xi - xyz(readOnly(position + j)));
+          const float r2 =
+              lengthSquared(separation(p.periodic, seam, xi, xyz(readOnly(position + j))));
           if (r2 >= h2) return;
           sum += kernels.W(r2);
           if (j != i && count < stride) list[count] = j;

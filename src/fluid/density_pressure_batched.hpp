@@ -64,6 +64,7 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
     const FloatBatch lane = laneNumbers();
     const Vec3 xs{x[i], y[i], z[i]};
     const BatchVec3 xi = broadcast(xs);
+    const bool seam = nearSeam(p.periodic, xs);
     // Meteer 2011, eq. 4, the particle itself included; walls by their volumes.
     FloatBatch sum(0.0f), wallSum(0.0f);
     // The neighbours (self excluded) for the force pass, in the order found: gathered here,
@@ -73,22 +74,21 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
     // One batch of candidates from j on: the density sum, and the neighbours appended to the
     // list. No branch on whether any lane passed: it would be mispredicted often, and
     // appending none costs a store.
-    const auto scan = [&](std::uint32_t j, const FloatBatch::mask_type& candidates)
-                          SPH_BATCH_INLINE_LAMBDA {
-                            const BatchVec3 rij = xi - loadBatch(x, y, z, j);
-                            const FloatBatch r2 = dot(rij, rij);
-                            auto near = candidates && r2 < h2;
-                            sum += kernelWhere(kernels, r2, near);
-                            // The particle itself is in one batch of one row: a scalar test finds
-                            // that batch.
-                            if (j <= i && i < j + kBatch)
-                              near = near && lane != FloatBatch(float(i - j));
-                            const unsigned bits = maskBits(near);
-                            if (count <= kMaxListed)
-                              count += appendLanes(found + count, j, bits);
-                            else
-                              count += std::uint32_t(__builtin_popcount(bits));
-                          };
+    const auto scan = [&](std::uint32_t j,
+                          const FloatBatch::mask_type& candidates) SPH_BATCH_INLINE_LAMBDA {
+      const BatchVec3 rij = separation(p.periodic, seam, xi, loadBatch(x, y, z, j));
+      const FloatBatch r2 = dot(rij, rij);
+      auto near = candidates && r2 < h2;
+      sum += kernelWhere(kernels, r2, near);
+      // The particle itself is in one batch of one row: a scalar test finds
+      // that batch.
+      if (j <= i && i < j + kBatch) near = near && lane != FloatBatch(float(i - j));
+      const unsigned bits = maskBits(near);
+      if (count <= kMaxListed)
+        count += appendLanes(found + count, j, bits);
+      else
+        count += std::uint32_t(__builtin_popcount(bits));
+    };
     forEachNeighborRange(spec, cellStart, xs, [&](std::uint32_t begin, std::uint32_t end) {
       for (std::uint32_t j = begin; j < end; j += kBatch)
         scan(j, lane < FloatBatch(float(end - j)));

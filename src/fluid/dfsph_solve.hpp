@@ -173,8 +173,8 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
   // Only the density solve starts warm: the divergence solve comes first in a step, and its
   // first pass finds the step's factors and wall gradients that a warm start would need.
   if (settings.warmStart && target == SolverTarget::RestDensity)
-    runSolverPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, walk, correct,
-                  gradients);
+    runSolverPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, params.periodic, walk,
+                  correct, gradients);
   SolverReport report;
   for (;;) {
     if (report.iterations == 0 && target == SolverTarget::NoDivergence) {
@@ -182,11 +182,11 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
           {params.mass / params.restDensity, dfsphSmallestFactorSum(params.h),
            fluid.solverFactor.data(), fluid.solverWallGradient.data()},
           rate};
-      runSolverPass(fluid, grid, boundary, objects, velocityRecords, kernels, walk, first,
-                    gradients);
+      runSolverPass(fluid, grid, boundary, objects, velocityRecords, kernels, params.periodic, walk,
+                    first, gradients);
     } else {
-      runSolverPass(fluid, grid, boundary, objects, velocityRecords, kernels, walk, rate,
-                    gradients);
+      runSolverPass(fluid, grid, boundary, objects, velocityRecords, kernels, params.periodic, walk,
+                    rate, gradients);
     }
     report.averageError = averageError(fluid);
     const bool done =
@@ -196,8 +196,8 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
       report.largestError = largestError(fluid);
       return report;
     }
-    runSolverPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, walk, correct,
-                  gradients);
+    runSolverPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, params.periodic, walk,
+                  correct, gradients);
     ++report.iterations;
   }
 }

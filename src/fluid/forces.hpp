@@ -35,11 +35,12 @@ void forcePass(FluidParticles<B>& fluid, const Grid<B>& grid, const BoundaryPart
   B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const Vec3 xi = xyz(position[i]);
+        const bool seam = nearSeam(p.periodic, xi);
         const ForceTerms<float, Vec3, Options, Kernels> terms(
             constants, unpackPressureState(state[i]), xyz(velocity[i]));
         ForceSums<float, Vec3> sums;
         forEachListedNeighbor(lists, i, xi, [&](std::uint32_t j) {
-          const Vec3 rij = xi - xyz(readOnly(position + j));
+          const Vec3 rij = separation(p.periodic, seam, xi, xyz(readOnly(position + j)));
           const float r2 = lengthSquared(rij);
           if (r2 >= h2) return;
           const PressureState sj = unpackPressureState(readOnly(state + j));

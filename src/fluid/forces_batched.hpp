@@ -77,13 +77,14 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
   CpuBackend::forEach(n, [=](std::size_t i) {
     const Vec3 xs{x[i], y[i], z[i]};
     const BatchVec3 xi = broadcast(xs);
+    const bool seam = nearSeam(p.periodic, xs);
     const ForceTerms<FloatBatch, BatchVec3, Options, Kernels> terms(
         constants, unpackPressureState(state[i]), Vec3{vx[i], vy[i], vz[i]});
     ForceSums<FloatBatch, BatchVec3> sums;
     const auto addFluid = [&](const BatchVec3& xj, const BatchVec3& vj,
                               const FloatBatch& pressureTerm, const FloatBatch& densityJ,
                               const FloatBatch::mask_type& candidates) SPH_BATCH_INLINE_LAMBDA {
-      const BatchVec3 rij = xi - xj;
+      const BatchVec3 rij = separation(p.periodic, seam, xi, xj);
       const FloatBatch r2 = dot(rij, rij);
       const auto near = candidates && r2 < h2Batch;
       if (stdx::none_of(near)) return;

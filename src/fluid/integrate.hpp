@@ -49,7 +49,7 @@ std::size_t integrate(FluidParticles<B>& fluid, float dt, const DomainParameters
   B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         Vec3 v = xyz(velocity[i]) + xyz(acceleration[i]) * dt;
-        Vec3 x = xyz(position[i]) + v * dt;
+        Vec3 x = wrapIntoDomain(d.periodic, xyz(position[i]) + v * dt);
         if (d.dampedBox) {
           detail::reflect(x.x, v.x, d.min.x, d.max.x, d.damping);
           detail::reflect(x.y, v.y, d.min.y, d.max.y, d.damping);

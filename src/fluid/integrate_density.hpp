@@ -47,11 +47,12 @@ void integrateDensityPass(FluidParticles<B>& fluid, const Grid<B>& grid,
   B::forEach(
       n, SPH_LAMBDA(std::size_t i) {
         const Vec3 xi = xyz(position[i]);
+        const bool seam = nearSeam(p.periodic, xi);
         const Vec3 vi = xyz(velocity[i]);
         const float rhoI = density[i];
         float rate = 0.0f;
         forEachListedNeighbor(lists, i, xi, [&](std::uint32_t j) {
-          const Vec3 rij = xi - xyz(readOnly(position + j));
+          const Vec3 rij = separation(p.periodic, seam, xi, xyz(readOnly(position + j)));
           const float r2 = lengthSquared(rij);
           if (r2 >= h2 || r2 <= 0.0f) return;
           const Vec3 gradW = rij * kernels.gradFactor(realSqrt(r2));

@@ -65,13 +65,15 @@ void integrateDensityBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
   CpuBackend::forEach(n, [=](std::size_t i) {
     const Vec3 xs{x[i], y[i], z[i]};
     const BatchVec3 xi = broadcast(xs);
+    const bool seam = nearSeam(p.periodic, xs);
     const BatchVec3 vi = broadcast(xyz(velocity[i]));
     const float rhoScalar = density[i];
     const FloatBatch rhoI(rhoScalar);
     FloatBatch rate(0.0f);
     const auto addFluid = [&](const FloatBatch(&c)[R::kFields],
                               const FloatBatch::mask_type& candidates) SPH_BATCH_INLINE_LAMBDA {
-      const BatchVec3 rij = xi - BatchVec3{c[R::kX], c[R::kY], c[R::kZ]};
+      const BatchVec3 rij =
+          separation(p.periodic, seam, xi, BatchVec3{c[R::kX], c[R::kY], c[R::kZ]});
       const FloatBatch r2 = dot(rij, rij);
       const auto near = candidates && r2 < h2Batch && r2 > zero;
       if (stdx::none_of(near)) return;

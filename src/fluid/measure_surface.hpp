@@ -27,10 +27,12 @@ void measureSurfaceWith(FluidParticles<B>& fluid, const Grid<B>& grid,
   Vec4* acceleration = fluid.acceleration.data();
   const float h2 = params.h * params.h;
   const float mass = params.mass;
+  const Periodicity periodic = params.periodic;
 
   B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const Vec3 xi = xyz(position[i]);
+        const bool seam = nearSeam(periodic, xi);
         Vec3 gradient{0.0f, 0.0f, 0.0f};
         auto add = [&](Vec3 rij, float volume) {
           const float r2 = lengthSquared(rij);
@@ -38,7 +40,7 @@ void measureSurfaceWith(FluidParticles<B>& fluid, const Grid<B>& grid,
           gradient += colourGradientTerm(kernels, makePair(rij, r2, true, h2), volume);
         };
         forEachListedNeighbor(lists, i, xi, [&](std::uint32_t j) {
-          add(xi - xyz(readOnly(position + j)),
+          add(separation(periodic, seam, xi, xyz(readOnly(position + j))),
               mass * unpackPressureState(readOnly(state + j)).inverseDensity);
         });
         forEachWallNeighbor(walls, xi, [&](std::uint32_t b) {

@@ -12,10 +12,48 @@ namespace sph::fluid {
 
 // Calls visitRange(begin, end) for each of the (up to) 9 rows of cells: [begin, end) indexes
 // the particles sorted by cell.
+//
+// Along a periodic axis the rows wrap around: a row at either end of x is two ranges.
+template <class VisitRange>
+SPH_HD void forEachNeighborRangePeriodic(const GridSpec& grid, const std::uint32_t* cellStart,
+                                         Int3 c, VisitRange&& visitRange) {
+  const bool wrapX = grid.periodicAxes & 1u, wrapY = grid.periodicAxes & 2u,
+             wrapZ = grid.periodicAxes & 4u;
+  const auto wrap = [](int v, int dims) { return v < 0 ? v + dims : (v >= dims ? v - dims : v); };
+  for (int dz = -1; dz <= 1; ++dz) {
+    int z = c.z + dz;
+    if (wrapZ) z = wrap(z, grid.dims.z);
+    if (z < 0 || z >= grid.dims.z) continue;
+    for (int dy = -1; dy <= 1; ++dy) {
+      int y = c.y + dy;
+      if (wrapY) y = wrap(y, grid.dims.y);
+      if (y < 0 || y >= grid.dims.y) continue;
+      const auto row = [&](int x0, int x1) {
+        visitRange(readOnly(cellStart + cellIndex(grid, Int3{x0, y, z})),
+                   readOnly(cellStart + cellIndex(grid, Int3{x1, y, z}) + 1));
+      };
+      const int last = grid.dims.x - 1;
+      if (wrapX && c.x == 0) {
+        row(last, last);
+        row(0, 1);
+      } else if (wrapX && c.x == last) {
+        row(last - 1, last);
+        row(0, 0);
+      } else {
+        row(c.x > 0 ? c.x - 1 : 0, c.x < last ? c.x + 1 : last);
+      }
+    }
+  }
+}
+
 template <class VisitRange>
 SPH_HD void forEachNeighborRange(const GridSpec& grid, const std::uint32_t* cellStart, Vec3 p,
                                  VisitRange&& visitRange) {
   const Int3 c = clampToGrid(grid, cellCoordinate(grid, p));
+  if (grid.periodicAxes != 0) {
+    forEachNeighborRangePeriodic(grid, cellStart, c, visitRange);
+    return;
+  }
   const int x0 = c.x > 0 ? c.x - 1 : 0;
   const int x1 = c.x + 1 < grid.dims.x ? c.x + 1 : grid.dims.x - 1;
   for (int z = c.z - 1; z <= c.z + 1; ++z) {

@@ -6,6 +6,7 @@
 
 #include "sph/core/grid.hpp"
 #include "sph/core/options.hpp"
+#include "sph/core/periodic.hpp"
 #include "sph/core/vec.hpp"
 
 namespace sph::fluid {
@@ -31,6 +32,7 @@ struct FluidParameters {
   // diffusion of coefficient densityDiffusion (δ); else summed from the neighbours each step.
   bool continuityDensity;
   float densityDiffusion;
+  Periodicity periodic;  // the domain's periodic axes; none by default
 };
 
 // How the CPU's passes take neighbours: a SIMD batch at a time, or one at a time as the GPU
@@ -54,6 +56,7 @@ struct DomainParameters {
   bool dampedBox;
   float damping;
   Outlets outlets;
+  Periodicity periodic;  // the same as FluidParameters::periodic
 };
 
 }  // namespace sph::fluid

@@ -29,12 +29,15 @@ void samplePointsWith(const FluidParticles<B>& fluid, const Grid<B>& grid,
   const float* pressure = fluid.pressure.data();
   const float h2 = params.h * params.h;
   const float mass = params.mass;
+  const Periodicity periodic = params.periodic;
   B::forEach(
       count, SPH_LAMBDA(std::size_t k) {
         const Vec3 x = xyz(points[k]);
+        const bool seam = nearSeam(periodic, x);
         PointSums sums;
         forEachNeighbor(spec, cellStart, x, [&](std::uint32_t j) {
-          const float r2 = lengthSquared(x - xyz(readOnly(position + j)));
+          const float r2 =
+              lengthSquared(separation(periodic, seam, x, xyz(readOnly(position + j))));
           if (r2 >= h2) return;
           const float rho = readOnly(density + j);
           addToPointSums(sums, mass / rho * kernels.W(r2), readOnly(pressure + j), rho,

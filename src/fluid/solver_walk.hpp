@@ -37,7 +37,8 @@ SPH_HD_INLINE V pairGradient(const Kernels& kernels, const Pair<S, V, M>& pair) 
 template <class B, class Kernels, class Pass>
 void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
                 const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
-                const float* records, Kernels kernels, Pass pass, float* keptGradients) {
+                const float* records, Kernels kernels, Periodicity periodic, Pass pass,
+                float* keptGradients) {
   const NeighborLists lists = neighborLists(fluid, grid);
   const WallCells walls = wallCells(boundary);
   const Vec4* wall = boundary.position.data();  // w: volume ψ_b
@@ -49,6 +50,7 @@ void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const float* ri = records + kRecordFields * i;
         const Vec3 xi{ri[0], ri[1], ri[2]};
+        const bool seam = nearSeam(periodic, xi);
         // Named here, not first inside `if constexpr`: nvcc's device lambdas may not capture
         // there.
         (void)walls;
@@ -62,7 +64,7 @@ void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
         const auto read = [&](std::uint32_t j, float(&columns)[kRecordFields]) {
           const float* rj = records + kRecordFields * j;
           for (std::uint32_t c = 0; c < kRecordFields; ++c) columns[c] = readOnly(rj + c);
-          return xi - Vec3{columns[0], columns[1], columns[2]};
+          return separation(periodic, seam, xi, Vec3{columns[0], columns[1], columns[2]});
         };
         const std::uint32_t count = lists.count[i];
         if (count != kNeighborOverflow) {
@@ -121,7 +123,7 @@ template <class Kernels, class Pass>
 void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>& grid,
                        const BoundaryParticles<CpuBackend>& boundary,
                        const BoundaryParticles<CpuBackend>& objects, const float* records,
-                       Kernels kernels, Pass pass, float* keptGradients) {
+                       Kernels kernels, Periodicity periodic, Pass pass, float* keptGradients) {
   const NeighborLists lists = neighborLists(fluid, grid);
   const WallCells walls = wallCells(boundary);
   const float* wx = boundary.batchX.data();
@@ -140,11 +142,13 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
     const float* ri = records + kRecordFields * i;
     const Vec3 xs{ri[0], ri[1], ri[2]};
     const BatchVec3 xi = broadcast(xs);
+    const bool seam = nearSeam(periodic, xs);
     auto sum = pass.template start<FloatBatch, BatchVec3>(i);
     // A batch of the cells' particles: only those within h count.
     const auto search = [&](const FloatBatch(&columns)[kRecordFields],
                             const FloatBatch::mask_type& candidates) SPH_BATCH_INLINE_LAMBDA {
-      const BatchVec3 rij = xi - BatchVec3{columns[0], columns[1], columns[2]};
+      const BatchVec3 rij =
+          separation(periodic, seam, xi, BatchVec3{columns[0], columns[1], columns[2]});
       const FloatBatch r2 = dot(rij, rij);
       const auto near = candidates && r2 < h2Batch;
       if (stdx::none_of(near)) return;
@@ -157,7 +161,8 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
         [&](const std::uint32_t* at) SPH_BATCH_INLINE_LAMBDA {
           FloatBatch columns[kRecordFields];
           gatherRecords(records, at, columns);
-          const BatchVec3 rij = xi - BatchVec3{columns[0], columns[1], columns[2]};
+          const BatchVec3 rij =
+              separation(periodic, seam, xi, BatchVec3{columns[0], columns[1], columns[2]});
           FloatBatch g;
           if (Pass::kFirstOfStep || kept == nullptr) {
             const FloatBatch r2 = dot(rij, rij);
@@ -212,18 +217,18 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
 template <class B, class Kernels, class Pass>
 void runSolverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
                    const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
-                   const float* records, Kernels kernels, [[maybe_unused]] NeighborWalk walk,
-                   const Pass& pass, float* keptGradients) {
+                   const float* records, Kernels kernels, const Periodicity& periodic,
+                   [[maybe_unused]] NeighborWalk walk, const Pass& pass, float* keptGradients) {
 #if !defined(__CUDACC__)
   if constexpr (B::kBatches) {
     if (walk == NeighborWalk::Batched) {
-      detail::solverPassBatched(fluid, grid, boundary, objects, records, kernels, pass,
+      detail::solverPassBatched(fluid, grid, boundary, objects, records, kernels, periodic, pass,
                                 keptGradients);
       return;
     }
   }
 #endif
-  solverPass(fluid, grid, boundary, objects, records, kernels, pass, keptGradients);
+  solverPass(fluid, grid, boundary, objects, records, kernels, periodic, pass, keptGradients);
 }
 
 }  // namespace sph::fluid

@@ -36,6 +36,7 @@ void wallForcesWith(const FluidParticles<B>& fluid, const Grid<B>& grid,
   const Vec4* wall = walls.position.data();  // w: ψ_b
   const float h2 = params.h * params.h;
   const float mass = params.mass, restDensity = params.restDensity;
+  const Periodicity periodic = params.periodic;
   const ForceConstants<float, Vec3, Kernels> constants(params, kernels);
   B::forEach(
       walls.count, SPH_LAMBDA(std::size_t b) {
@@ -46,9 +47,10 @@ void wallForcesWith(const FluidParticles<B>& fluid, const Grid<B>& grid,
           return;
         }
         const Vec4 xb = wall[b];
+        const bool seam = nearSeam(periodic, xyz(xb));
         Vec3 sum{0.0f, 0.0f, 0.0f};  // Σ_i a_ib, the fluid's acceleration through b
         forEachNeighbor(spec, cellStart, xyz(xb), [&](std::uint32_t i) {
-          const Vec3 rib = xyz(readOnly(position + i)) - xyz(xb);
+          const Vec3 rib = separation(periodic, seam, xyz(readOnly(position + i)), xyz(xb));
           const float r2 = lengthSquared(rib);
           if (r2 >= h2 || r2 <= 0.0f) return;
           const ForceTerms<float, Vec3, Options, Kernels> terms(

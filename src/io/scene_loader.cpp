@@ -30,6 +30,16 @@ DomainDesc readDomain(const ObjectReader& in) {
   domain.outside = in.choice("outside", domain.outside, kOutsideNames);
   domain.dampedBox = in.boolean("damped_box", domain.dampedBox);
   domain.damping = in.number("damping", domain.damping, kClosedUnit);
+  const std::string axes = in.string("periodic", "");
+  for (char axis : axes) {
+    const std::size_t a = std::string("xyz").find(axis);
+    if (a == std::string::npos || domain.periodic[a])
+      in.context().fail(in.keyPath("periodic"),
+                        "expected the periodic axes as letters x, y and z, each at most once "
+                        "(\"xz\"; \"\" for none), got \"" +
+                            axes + "\"");
+    domain.periodic[a] = true;
+  }
   return domain;
 }
 
@@ -348,6 +358,40 @@ void checkDensityModel(const ReadContext& context, const Scene& scene) {
                  {"fluid.pressure_form"});
 }
 
+// A periodic axis must hold the kernel's support three times (the grid's cells then see each
+// neighbour once, through one image) and a whole number of spacings (the lattice then meets
+// itself across the face). Objects are not carried across a periodic face.
+void checkPeriodic(const ReadContext& context, const Scene& scene) {
+  const DomainDesc& d = scene.domain;
+  const double spacing = scene.fluid.spacing, support = scene.fluid.supportRatio * spacing;
+  for (int a = 0; a < 3; ++a) {
+    if (!d.periodic[a]) continue;
+    const std::string axis(1, "xyz"[a]);
+    const double period = d.box.max[a] - d.box.min[a];
+    if (period < 3.0 * support)
+      context.fail("domain.periodic",
+                   "expected the domain to be at least 3 support radii (" +
+                       formatNumber(3.0 * support) + " m) long along periodic axis " + axis +
+                       ", got " + formatNumber(period) + " m",
+                   {"domain.min", "domain.max", "fluid.spacing", "fluid.support_ratio"});
+    const double spacings = period / spacing;
+    if (std::abs(spacings - std::round(spacings)) > 1e-6 * spacings)
+      context.fail("domain.periodic",
+                   "expected the domain's length along periodic axis " + axis +
+                       " to be a whole number of fluid.spacing (" + formatNumber(spacing) +
+                       " m), got " + formatNumber(period) + " m, " + formatNumber(spacings) +
+                       " spacings",
+                   {"domain.min", "domain.max", "fluid.spacing"});
+  }
+  if ((d.periodic[0] || d.periodic[1] || d.periodic[2]) && !scene.objects.empty())
+    context.fail("domain.periodic",
+                 "expected no periodic axes in a scene with objects (objects are not carried "
+                 "across a periodic face), got \"" +
+                     std::string(d.periodic[0] ? "x" : "") + (d.periodic[1] ? "y" : "") +
+                     (d.periodic[2] ? "z" : "") + "\"",
+                 {"objects"});
+}
+
 // Boundary coupling gives the objects the incompressible solver's pressure: there is none
 // without it.
 void checkCoupling(const ReadContext& context, const Scene& scene) {
@@ -505,6 +549,7 @@ Scene parseScene(const json& document, const std::string& sourceName,
   checkObjectNames(context, scene);
   checkWallNames(context, scene);
   checkCoupling(context, scene);
+  checkPeriodic(context, scene);
   checkDensityModel(context, scene);
   checkProbes(context, scene);
   checkFlow(context, scene);

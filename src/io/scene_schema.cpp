@@ -28,8 +28,8 @@ KeySchema buildSchema() {
   return object(
       "",
       {value("name"), value("description"),
-       object("domain",
-              {vec3("min"), vec3("max"), value("outside"), value("damped_box"), value("damping")}),
+       object("domain", {vec3("min"), vec3("max"), value("outside"), value("damped_box"),
+                         value("damping"), value("periodic")}),
        vec3("gravity"),
        object("fluid",
               {value("rest_density"), value("spacing"), value("support_ratio"), value("solver"),

@@ -28,6 +28,10 @@ json domainToJson(const DomainDesc& domain) {
   out["outside"] = nameOf(domain.outside, kOutsideNames);
   out["damped_box"] = domain.dampedBox;
   out["damping"] = domain.damping;
+  std::string periodic;
+  for (int a = 0; a < 3; ++a)
+    if (domain.periodic[a]) periodic += "xyz"[a];
+  out["periodic"] = periodic;
   return out;
 }
 

@@ -225,12 +225,11 @@ Calibration calibrate(const Scene& scene) {
           ? cflTimeStep(t.cfl, out.supportRadius, out.soundSpeed, 0.0)
           : forceTimeStep(f.dfsph.forceFactor, out.supportRadius,
                           std::hypot(scene.gravity[0], scene.gravity[1], scene.gravity[2]));
-  out.initialDt =
-      t.fixedDt
-          ? *t.fixedDt
-          : std::min({startBound,
-                      viscousTimeStep(t.viscousFactor, out.supportRadius, out.kinematicViscosity),
-                      t.maxDt});
+  out.initialDt = t.fixedDt ? *t.fixedDt
+                            : std::min({startBound,
+                                        viscousTimeStep(t.viscousFactor, out.supportRadius,
+                                                        out.kinematicViscosity, f.wallFriction),
+                                        t.maxDt});
   return out;
 }
 
@@ -256,7 +255,19 @@ fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& c)
   p.densityDiffusion = static_cast<float>(f.densityDiffusion);
   p.gravity = Vec3{static_cast<float>(scene.gravity[0]), static_cast<float>(scene.gravity[1]),
                    static_cast<float>(scene.gravity[2])};
+  p.periodic = periodicity(scene, p.h);
   return p;
+}
+
+Periodicity periodicity(const Scene& scene, float support) {
+  const DomainDesc& d = scene.domain;
+  std::uint32_t axes = 0;
+  for (int a = 0; a < 3; ++a)
+    if (d.periodic[a]) axes |= 1u << a;
+  auto v = [](const Vec3d& x) {
+    return Vec3{static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2])};
+  };
+  return makePeriodicity(axes, v(d.box.min), v(d.box.max), support);
 }
 
 fluid::DomainParameters domainParameters(const Scene& scene) {
@@ -269,6 +280,7 @@ fluid::DomainParameters domainParameters(const Scene& scene) {
                               d.outside == OutsidePolicy::Clamp,
                               d.dampedBox,
                               static_cast<float>(d.damping),
+                              {},
                               {}};
   static_assert(kMaxOutlets <= fluid::kOutletSlots, "an outlet the stage has no slot for");
   for (const OutletDesc& o : scene.outlets) {
@@ -283,6 +295,7 @@ EngineSetup engineSetup(const Scene& scene, const Calibration& calibration, cons
   EngineSetup setup;
   setup.params = fluidParameters(scene, calibration);
   setup.domain = domainParameters(scene);
+  setup.domain.periodic = setup.params.periodic;
   setup.walls = walls.particles();
   // About twice the neighbours of a particle in the initial lattice leaves room for
   // compression. A multiple of 16 indices (a cache line): 64 for h = 2d, which measured 6 %

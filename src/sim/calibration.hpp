@@ -16,7 +16,9 @@ namespace sph::sim {
 Calibration calibrate(const Scene& scene);
 
 fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& calibration);
+// Without its periodic axes, which need the kernel's support: engineSetup adds them.
 fluid::DomainParameters domainParameters(const Scene& scene);
+Periodicity periodicity(const Scene& scene, float support);
 // An engine's setup for the scene, all but the fluid particles: the parameters, the domain, the
 // walls' particles and room for each particle's neighbour list. The caller adds the fluid.
 EngineSetup engineSetup(const Scene& scene, const Calibration& calibration, const Walls& walls);

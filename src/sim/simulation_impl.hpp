@@ -168,7 +168,9 @@ struct Simulation::Impl {
     for (const ProbeDesc& p : scene.probes)
       for (std::size_t w = 0; w < scene.walls.size(); ++w)
         if (p.kind == ProbeKind::Force && p.wall == scene.walls[w].name) probed[w] = 1;
-    for (std::size_t k = 0; k < watched.size(); ++k) watched[k] = probed[wallOfParticle[k]];
+    // A periodic image belongs to no wall (its index is past the last): never watched.
+    for (std::size_t k = 0; k < watched.size(); ++k)
+      watched[k] = wallOfParticle[k] < probed.size() ? probed[wallOfParticle[k]] : 0;
     engine->watchWalls(watched);
   }
   // The fluid's force on each probed wall this step, summed in the engine's wall order (the
@@ -178,6 +180,7 @@ struct Simulation::Impl {
     const std::vector<Vec4> force = engine->wallForces();
     std::vector<double> sum(3 * fluidForceOnWall.size(), 0.0);
     for (std::size_t k = 0; k < force.size(); ++k) {
+      if (wallOfParticle[k] >= fluidForceOnWall.size()) continue;  // a periodic image
       double* s = &sum[3 * wallOfParticle[k]];
       s[0] += force[k].x;
       s[1] += force[k].y;
@@ -410,7 +413,8 @@ struct Simulation::Impl {
                                     : cflTimeStep(t.cfl, params.h, params.soundSpeed, m.maxSpeed),
                    forceTimeStep(incompressible() ? scene.fluid.dfsph.forceFactor : t.forceFactor,
                                  params.h, m.maxAcceleration),
-                   viscousTimeStep(t.viscousFactor, params.h, calibration.kinematicViscosity),
+                   viscousTimeStep(t.viscousFactor, params.h, calibration.kinematicViscosity,
+                                   scene.fluid.wallFriction),
                    objects ? objectTimeStep() : HUGE_VAL, t.maxDt});
     const double remaining = until - time;
     // Under a nanosecond (the shortest time.fixed_dt a scene may ask for) the fluid has blown

@@ -182,8 +182,7 @@ Sampled sampleMesh(const WallContext& c, const WallDesc& w) {
     for (const Vec3& p : samples.position) out.points.push_back(toD(p));
   }
   if (out.points.empty())
-    c.fail("file",
-           file.string() + " gives no particles at spacing " + formatNumber(c.spacing));
+    c.fail("file", file.string() + " gives no particles at spacing " + formatNumber(c.spacing));
   if (closed) {
     // Normals out of the enclosed volume put the fluid outside it, and the inside is solid.
     const bool fluidOutside = objects::signedVolume(mesh) > 0.0;
@@ -212,6 +211,42 @@ Sampled sampleWall(const WallContext& c, const WallDesc& w) {
   return {};
 }
 
+// The wall particles a fluid particle near a periodic face needs from beyond the other face:
+// each particle within the kernel's reach of a periodic face, shifted by the period (and at a
+// corner of two periodic axes, by both). Walls do not move, so these copies stay exact, and
+// the fluid's passes find them as plain neighbours without wrapping.
+std::vector<DVec3> periodicImages(const std::vector<DVec3>& particles, const Scene& scene,
+                                  double reach) {
+  const DomainDesc& d = scene.domain;
+  std::vector<DVec3> images;
+  for (const DVec3& p : particles) {
+    const double at[3] = {p.x, p.y, p.z};
+    // Per axis, the shifts that bring p within reach of the domain from the far side.
+    int shifts[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+    int count[3] = {1, 1, 1};
+    for (int a = 0; a < 3; ++a) {
+      if (!d.periodic[a]) continue;
+      const double lo = d.box.min[a], hi = d.box.max[a];
+      if (at[a] < lo + reach)
+        shifts[a][count[a]++] = 1;
+      else if (at[a] > hi - reach)
+        shifts[a][count[a]++] = -1;
+    }
+    for (int i = 0; i < count[0]; ++i)
+      for (int j = 0; j < count[1]; ++j)
+        for (int k = 0; k < count[2]; ++k) {
+          const int s[3] = {shifts[0][i], shifts[1][j], shifts[2][k]};
+          if (s[0] == 0 && s[1] == 0 && s[2] == 0) continue;
+          DVec3 q = p;
+          q.x += s[0] * (d.box.max[0] - d.box.min[0]);
+          q.y += s[1] * (d.box.max[1] - d.box.min[1]);
+          q.z += s[2] * (d.box.max[2] - d.box.min[2]);
+          images.push_back(q);
+        }
+  }
+  return images;
+}
+
 }  // namespace
 
 Walls::Walls(const Scene& scene) : solids_(std::make_unique<Solids>()) {
@@ -225,8 +260,11 @@ Walls::Walls(const Scene& scene) : solids_(std::make_unique<Solids>()) {
     if (wall.solid) solids_->tests.push_back(std::move(wall.solid));
   }
   firstParticle_.push_back(solids_->particles.size());
-  particles_.reserve(solids_->particles.size());
+  const std::vector<DVec3> images =
+      periodicImages(solids_->particles, scene, scene.fluid.supportRatio * spacing);
+  particles_.reserve(solids_->particles.size() + images.size());
   for (const DVec3& p : solids_->particles) particles_.push_back(toF(p));
+  for (const DVec3& p : images) particles_.push_back(toF(p));
   solids_->clearance = 0.75 * spacing;
   solids_->grid.build(solids_->particles, solids_->clearance);
 }

@@ -21,8 +21,11 @@ class Walls {
   Walls(Walls&&) noexcept;
   Walls& operator=(Walls&&) noexcept;
 
+  // The walls' particles, then their periodic images (copies across a periodic face, for the
+  // fluid near it), which belong to no wall.
   const std::vector<Vec3>& particles() const { return particles_; }
-  // Wall w's particles are [firstParticle()[w], firstParticle()[w + 1]) of particles().
+  // Wall w's particles are [firstParticle()[w], firstParticle()[w + 1]) of particles(); the
+  // images follow the last wall's.
   const std::vector<std::size_t>& firstParticle() const { return firstParticle_; }
 
   // Removes the points that lie on a wall's solid side (inside an obstacle, outside a closed

@@ -58,6 +58,10 @@ TEST(TimeStep, ViscousStepHoldsTheDiffusionNumber) {
     EXPECT_NEAR(nu * dt / (h * h), factor, 1e-12) << "nu " << nu;
   }
   EXPECT_EQ(viscousTimeStep(factor, h, 0.0), HUGE_VAL);
+  // A no-slip wall (friction 2) doubles the diffusion beside it, and halves the step; a
+  // friction under 1 leaves the fluid's own bound.
+  EXPECT_DOUBLE_EQ(viscousTimeStep(factor, h, 1e-3, 2.0), 0.5 * viscousTimeStep(factor, h, 1e-3));
+  EXPECT_DOUBLE_EQ(viscousTimeStep(factor, h, 1e-3, 0.5), viscousTimeStep(factor, h, 1e-3));
 }
 
 }  // namespace

@@ -268,6 +268,27 @@ TEST(SceneErrors, BadWallsNameTheKey) {
             "scenes/x.json: walls[5].file: expected the path of an OBJ or STL file");
 }
 
+// Periodic axes: letters x, y, z once each; a period of three support radii or more, and a
+// whole number of spacings; no objects.
+TEST(SceneErrors, BadPeriodicAxesNameTheKey) {
+  const json minimal = minimalSceneJson();  // spacing 0.01, support 0.02, domain 1 m
+  EXPECT_EQ(parseError(with(minimal, "/domain/periodic", "xw")),
+            "scenes/x.json: domain.periodic: expected the periodic axes as letters x, y and z, "
+            "each at most once (\"xz\"; \"\" for none), got \"xw\"");
+  expectContains(parseError(with(minimal, "/domain/periodic", "yy")), {"got \"yy\""});
+  const json narrow = with(with(minimal, "/domain/max/0", 0.05), "/fluid/blocks/0/max/0", 0.05);
+  expectContains(parseError(with(narrow, "/domain/periodic", "x")),
+                 {"scenes/x.json: domain.periodic: expected the domain to be at least 3 support "
+                  "radii (0.06 m) long along periodic axis x, got 0.05 m"});
+  expectContains(
+      parseError(with(with(minimal, "/domain/periodic", "z"), "/domain/max/2", 0.995)),
+      {"scenes/x.json: domain.periodic: expected the domain's length along periodic axis z to "
+       "be a whole number of fluid.spacing (0.01 m), got 0.995 m, 99.5 spacings"});
+  expectContains(parseError(with(completeSceneJson(), "/domain/periodic", "y")),
+                 {"scenes/x.json: domain.periodic: expected no periodic axes in a scene with "
+                  "objects"});
+}
+
 // Boundary coupling hands the objects the incompressible solver's pressure: none without it.
 TEST(SceneErrors, BoundaryCouplingNeedsTheIncompressibleSolver) {
   EXPECT_EQ(parseError(with(completeSceneJson(), "/fluid/solver", "wcsph")),

@@ -202,6 +202,19 @@ TEST(SceneLoader, BoxesMayTouchTheDomainFaces) {
   EXPECT_NO_THROW(parseScene(document, kSource));
 }
 
+// The complete scene has objects, which a periodic domain refuses: its periodic axes are read
+// and written here.
+TEST(SceneJson, RoundTripsPeriodicAxes) {
+  json document = minimalSceneJson();
+  document["domain"]["periodic"] = "zx";
+  const Scene original = parseScene(document, kSource);
+  EXPECT_EQ(original.domain.periodic, (std::array<bool, 3>{true, false, true}));
+  const json written = sceneToJson(original);
+  EXPECT_EQ(written["domain"]["periodic"], "xz");
+  expectScenesEqual(parseScene(written, kSource), original);
+  EXPECT_EQ(sceneToJson(parseScene(minimalSceneJson(), kSource))["domain"]["periodic"], "");
+}
+
 TEST(SceneJson, RoundTripsTheCompleteScene) {
   const Scene original = parseScene(completeSceneJson(), kSource);
   const json written = sceneToJson(original);

@@ -113,6 +113,7 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.domain.outside, b.domain.outside);
   EXPECT_EQ(a.domain.dampedBox, b.domain.dampedBox);
   EXPECT_EQ(a.domain.damping, b.domain.damping);
+  EXPECT_EQ(a.domain.periodic, b.domain.periodic);
   EXPECT_EQ(a.gravity, b.gravity);
   const FluidDesc& fa = a.fluid;
   const FluidDesc& fb = b.fluid;

@@ -10,6 +10,7 @@
 
 #include "backends.hpp"
 #include "io/scene_loader.hpp"
+#include "sph/core/constants.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph {
@@ -224,6 +225,60 @@ TEST(Poiseuille, PipeFlowHasTheParabolicProfileAndThePressureDrop) {
   const double expectedDrop = 8.0 * mu * mean * 0.08 / (radius * radius);
   EXPECT_NEAR(drop, expectedDrop, 0.05 * expectedDrop);
   EXPECT_EQ(initial + sim.emittedCount(), sim.fluidCount() + sim.outletStats().at(0).particles);
+}
+
+// Plane Poiseuille flow (Morris, Fox & Zhu 1997, their own test; scenes/poiseuille_channel.json):
+// a liquid between two plates W apart, periodic along x and z, set moving from rest by a body
+// force F along x. Its velocity is their series solution
+//   u(y, t) = F y (W - y) / (2ν) - Σ_n 4 F W² / (ν π³ (2n+1)³) sin((2n+1) π y / W) e^(-(2n+1)² π² ν
+//   t / W²)
+// at every time: the transient checks the viscosity in physical units, the steady parabola the
+// no-slip walls, and both the periodic faces, which the flow crosses all the time.
+double planePoiseuille(double y, double t, double width, double force, double nu) {
+  double u = force * y * (width - y) / (2.0 * nu);
+  for (int n = 0; n < 50; ++n) {
+    const double k = 2 * n + 1;
+    u -= 4.0 * force * width * width / (nu * std::pow(kPi * k, 3)) * std::sin(k * kPi * y / width) *
+         std::exp(-k * k * kPi * kPi * nu * t / (width * width));
+  }
+  return u;
+}
+
+TEST(Poiseuille, PeriodicChannelFollowsMorrisFromRestToTheSteadyParabola) {
+  const Scene scene =
+      io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/poiseuille_channel.json");
+  const double width = 0.02, force = scene.gravity[0];
+  const double nu = scene.fluid.viscosity / scene.fluid.restDensity;
+  const double peak = force * width * width / (8.0 * nu);  // 1 cm/s on the mid-plane
+  Simulation sim(scene);
+  const std::uint64_t initial = sim.fluidCount();
+  constexpr int kBins = 8;  // layers of equal width across the channel
+  // Under the sanitizers, the start of the transient only.
+  const std::vector<double> times =
+      testing::kSanitized ? std::vector<double>{0.05} : std::vector<double>{0.1, 0.25, 1.0};
+  for (double t : times) {
+    sim.advanceTo(t);
+    const ParticleFrame frame = sim.frame(false);
+    std::vector<double> speedSum(kBins, 0.0);
+    std::vector<int> count(kBins, 0);
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+      const int bin = std::clamp(int(frame.position[3 * i + 1] / width * kBins), 0, kBins - 1);
+      speedSum[bin] += frame.velocity[3 * i];
+      ++count[bin];
+    }
+    for (int b = 0; b < kBins; ++b) {
+      ASSERT_GT(count[b], 0) << "layer " << b;
+      // The exact profile averaged over the layer (Simpson's rule: it is smooth there).
+      const double lo = width * b / kBins, hi = width * (b + 1) / kBins;
+      const double expected = (planePoiseuille(lo, t, width, force, nu) +
+                               4.0 * planePoiseuille(0.5 * (lo + hi), t, width, force, nu) +
+                               planePoiseuille(hi, t, width, force, nu)) /
+                              6.0;
+      EXPECT_NEAR(speedSum[b] / count[b], expected, 0.05 * peak)
+          << "t " << t << " s, layer " << b << " (y " << lo << " to " << hi << " m)";
+    }
+  }
+  EXPECT_EQ(sim.fluidCount(), initial);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 // Uniform grid cell arithmetic. Cells are cubes of edge `cellSize` (= h) from `origin`;
-// a cell index is x + dims.x (y + dims.y z).
+// a cell index is x + dims.x (y + dims.y z). Along a periodic axis the grid spans the period
+// exactly: its last cell takes what is left of the period (from one to two cell edges), and
+// the cells on either end are neighbours.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +16,7 @@ struct GridSpec {
   float inverseCellSize;
   Int3 dims;
   std::uint32_t cellCount;
+  std::uint32_t periodicAxes = 0;  // bit a: axis a wraps around (x 1, y 2, z 4)
 };
 
 SPH_HD int floorToInt(float v) {
@@ -59,6 +62,27 @@ inline GridSpec makeGrid(Vec3 lo, Vec3 hi, float cellSize) {
   g.cellSize = cellSize;
   g.inverseCellSize = 1.0f / cellSize;
   g.dims = Int3{cells(hi.x - lo.x), cells(hi.y - lo.y), cells(hi.z - lo.z)};
+  g.cellCount = static_cast<std::uint32_t>(g.dims.x) * static_cast<std::uint32_t>(g.dims.y) *
+                static_cast<std::uint32_t>(g.dims.z);
+  return g;
+}
+
+// The same, over [lo, hi] along the axes that are not periodic, and over exactly the period
+// [periodLo, periodHi) along those that are: floor(period / cellSize) cells there, at least 3
+// (fewer would visit a cell twice as a neighbour from both sides; the caller refuses them).
+inline GridSpec makePeriodicGrid(Vec3 lo, Vec3 hi, float cellSize, std::uint32_t periodicAxes,
+                                 Vec3 periodLo, Vec3 periodHi) {
+  GridSpec g = makeGrid(lo, hi, cellSize);
+  g.periodicAxes = periodicAxes;
+  const auto along = [&](int axis, float& origin, int& dims, float periodLow, float periodHigh) {
+    if (!((periodicAxes >> axis) & 1u)) return;
+    origin = periodLow;
+    const int n = static_cast<int>((periodHigh - periodLow) / cellSize);
+    dims = n < 3 ? 3 : n;
+  };
+  along(0, g.origin.x, g.dims.x, periodLo.x, periodHi.x);
+  along(1, g.origin.y, g.dims.y, periodLo.y, periodHi.y);
+  along(2, g.origin.z, g.dims.z, periodLo.z, periodHi.z);
   g.cellCount = static_cast<std::uint32_t>(g.dims.x) * static_cast<std::uint32_t>(g.dims.y) *
                 static_cast<std::uint32_t>(g.dims.z);
   return g;
