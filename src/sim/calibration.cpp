@@ -217,20 +217,28 @@ Calibration calibrate(const Scene& scene) {
 
   if (!scene.objects.empty()) calibrateContact(scene, out);
 
-  const TimeDesc& t = scene.time;
-  // The fluid starts at rest: the first step is bounded by sound (weakly compressible) or by
-  // gravity's acceleration (incompressible, whose step follows the flow).
-  const double startBound =
-      f.solver == FluidSolver::Wcsph
-          ? cflTimeStep(t.cfl, out.supportRadius, out.soundSpeed, 0.0)
-          : forceTimeStep(f.dfsph.forceFactor, out.supportRadius,
-                          std::hypot(scene.gravity[0], scene.gravity[1], scene.gravity[2]));
-  out.initialDt = t.fixedDt ? *t.fixedDt
-                            : std::min({startBound,
-                                        viscousTimeStep(t.viscousFactor, out.supportRadius,
-                                                        out.kinematicViscosity, f.wallFriction),
-                                        t.maxDt});
+  // The fluid starts at rest, under gravity alone.
+  out.initialDt =
+      scene.time.fixedDt
+          ? *scene.time.fixedDt
+          : longestStep(stepLimits(scene, out), 0.0,
+                        std::hypot(scene.gravity[0], scene.gravity[1], scene.gravity[2]));
   return out;
+}
+
+StepLimits stepLimits(const Scene& scene, const Calibration& c) {
+  const TimeDesc& t = scene.time;
+  StepLimits l;
+  l.followsFlow = scene.fluid.solver == FluidSolver::Dfsph;
+  l.cfl = t.cfl;
+  l.h = c.supportRadius;
+  l.soundSpeed = c.soundSpeed;
+  l.forceFactor = l.followsFlow ? scene.fluid.dfsph.forceFactor : t.forceFactor;
+  l.viscousFactor = t.viscousFactor;
+  l.kinematicViscosity = c.kinematicViscosity;
+  l.wallFriction = scene.fluid.wallFriction;
+  l.maxDt = t.maxDt;
+  return l;
 }
 
 fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& c) {

@@ -6,6 +6,7 @@
 #include "objects/object_world.hpp"
 #include "sim/fluid_engine.hpp"
 #include "sim/walls.hpp"
+#include "sph/core/time_step.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::sim {
@@ -19,6 +20,8 @@ fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& ca
 // Without its periodic axes, which need the kernel's support: engineSetup adds them.
 fluid::DomainParameters domainParameters(const Scene& scene);
 Periodicity periodicity(const Scene& scene, float support);
+// The bounds of every step (core/time_step.hpp), from the scene and its calibration.
+StepLimits stepLimits(const Scene& scene, const Calibration& calibration);
 // An engine's setup for the scene, all but the fluid particles: the parameters, the domain, the
 // walls' particles and room for each particle's neighbour list. The caller adds the fluid.
 EngineSetup engineSetup(const Scene& scene, const Calibration& calibration, const Walls& walls);

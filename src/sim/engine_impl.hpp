@@ -215,16 +215,11 @@ class EngineImpl final : public FluidEngine {
   HostFluidState downloadState() const override {
     const std::size_t n = fluid_.count;
     HostFluidState s;
+    s.particles = downloadNow(fluid_);
     const auto copy = [](const auto& buffer, auto& host, std::size_t count) {
       host.resize(count);
       B::download(buffer, host.data(), count);
     };
-    copy(fluid_.id, s.id, n);
-    copy(fluid_.position, s.position, n);
-    copy(fluid_.velocity, s.velocity, n);
-    copy(fluid_.acceleration, s.acceleration, n);
-    copy(fluid_.density, s.density, n);
-    copy(fluid_.pressure, s.pressure, n);
     copy(fluid_.warmStart, s.warmStart, fluid_.warmStart.size() != 0 ? n : 0);
     copy(fluid_.externalById, s.externalById, fluid_.externalById.size());
     s.drainedByOutlet = drained_;
@@ -232,14 +227,15 @@ class EngineImpl final : public FluidEngine {
     return s;
   }
   void uploadState(const HostFluidState& s) override {
-    const std::size_t n = s.id.size();
+    const HostParticles& p = s.particles;
+    const std::size_t n = p.id.size();
     fluid_.count = n;
-    B::upload(fluid_.id, s.id.data(), n);
-    B::upload(fluid_.position, s.position.data(), n);
-    B::upload(fluid_.velocity, s.velocity.data(), n);
-    B::upload(fluid_.acceleration, s.acceleration.data(), n);
-    B::upload(fluid_.density, s.density.data(), n);
-    B::upload(fluid_.pressure, s.pressure.data(), n);
+    B::upload(fluid_.id, p.id.data(), n);
+    B::upload(fluid_.position, p.position.data(), n);
+    B::upload(fluid_.velocity, p.velocity.data(), n);
+    B::upload(fluid_.acceleration, p.acceleration.data(), n);
+    B::upload(fluid_.density, p.density.data(), n);
+    B::upload(fluid_.pressure, p.pressure.data(), n);
     if (s.warmStart.empty())
       fluid_.warmStart.resize(0);
     else

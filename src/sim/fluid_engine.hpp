@@ -53,12 +53,7 @@ struct HostContainment {
 // What the next step reads of the fluid, in the engine's order (the order decides how the next
 // sort breaks ties, so a state put back in it steps on byte for byte): Simulation::saveState.
 struct HostFluidState {
-  std::vector<std::uint32_t> id;
-  std::vector<Vec4> position;
-  std::vector<Vec4> velocity;
-  std::vector<Vec4> acceleration;  // w: |∇c| as last measured
-  std::vector<float> density;      // state with continuity density
-  std::vector<float> pressure;
+  HostParticles particles;         // the density is state with continuity density
   std::vector<Vec4> warmStart;     // empty unless the incompressible solver has run
   std::vector<Vec4> externalById;  // empty when unused
   std::vector<std::uint64_t> drainedByOutlet;

@@ -404,18 +404,10 @@ struct Simulation::Impl {
     const bool flows = !scene.emitters.empty() || !scene.outlets.empty();
     if (m.maxSpeed > speedLimit || (engine->fluidCount() == 0 && initialFluid > 0 && !flows))
       failRunaway(m, speedLimit);
-    const TimeDesc& t = scene.time;
-    double next =
-        t.fixedDt
-            ? *t.fixedDt
-            : std::min(
-                  {incompressible() ? flowTimeStep(t.cfl, params.h, m.maxSpeed)
-                                    : cflTimeStep(t.cfl, params.h, params.soundSpeed, m.maxSpeed),
-                   forceTimeStep(incompressible() ? scene.fluid.dfsph.forceFactor : t.forceFactor,
-                                 params.h, m.maxAcceleration),
-                   viscousTimeStep(t.viscousFactor, params.h, calibration.kinematicViscosity,
-                                   scene.fluid.wallFriction),
-                   objects ? objectTimeStep() : HUGE_VAL, t.maxDt});
+    double next = scene.time.fixedDt
+                      ? *scene.time.fixedDt
+                      : longestStep(sim::stepLimits(scene, calibration), m.maxSpeed,
+                                    m.maxAcceleration, objects ? objectTimeStep() : HUGE_VAL);
     const double remaining = until - time;
     // Under a nanosecond (the shortest time.fixed_dt a scene may ask for) the fluid has blown
     // up: its speeds or accelerations are beyond any scene's, and the run would crawl forever

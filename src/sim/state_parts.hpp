@@ -177,12 +177,13 @@ struct Counters {
 };
 
 inline void writeFluid(StateWriter& out, const HostFluidState& fluid) {
-  out.vector(fluid.id);
-  out.vector(fluid.position);
-  out.vector(fluid.velocity);
-  out.vector(fluid.acceleration);
-  out.vector(fluid.density);
-  out.vector(fluid.pressure);
+  const HostParticles& p = fluid.particles;
+  out.vector(p.id);
+  out.vector(p.position);
+  out.vector(p.velocity);
+  out.vector(p.acceleration);
+  out.vector(p.density);
+  out.vector(p.pressure);
   out.vector(fluid.warmStart);
   out.vector(fluid.externalById);
   out.vector(fluid.drainedByOutlet);
@@ -192,23 +193,24 @@ inline void writeFluid(StateWriter& out, const HostFluidState& fluid) {
 // Checked against the ids given out and the scene's outlets.
 inline HostFluidState readFluid(StateReader& in, std::uint32_t nextId, std::size_t outlets) {
   HostFluidState fluid;
-  fluid.id = in.vector<std::uint32_t>();
-  fluid.position = in.vector<Vec4>();
-  fluid.velocity = in.vector<Vec4>();
-  fluid.acceleration = in.vector<Vec4>();
-  fluid.density = in.vector<float>();
-  fluid.pressure = in.vector<float>();
+  HostParticles& p = fluid.particles;
+  p.id = in.vector<std::uint32_t>();
+  p.position = in.vector<Vec4>();
+  p.velocity = in.vector<Vec4>();
+  p.acceleration = in.vector<Vec4>();
+  p.density = in.vector<float>();
+  p.pressure = in.vector<float>();
   fluid.warmStart = in.vector<Vec4>();
   fluid.externalById = in.vector<Vec4>();
   fluid.drainedByOutlet = in.vector<std::uint64_t>();
   fluid.densityIsState = in.value<bool>();
-  const std::size_t n = fluid.id.size();
-  for (std::size_t size : {fluid.position.size(), fluid.velocity.size(), fluid.acceleration.size(),
-                           fluid.density.size(), fluid.pressure.size()})
+  const std::size_t n = p.id.size();
+  for (std::size_t size : {p.position.size(), p.velocity.size(), p.acceleration.size(),
+                           p.density.size(), p.pressure.size()})
     if (size != n) in.mismatch("its particle arrays differ in length");
   if (!fluid.warmStart.empty() && fluid.warmStart.size() != n) in.mismatch("its warm start");
   if (fluid.drainedByOutlet.size() != outlets) in.mismatch("its outlets");
-  for (std::uint32_t id : fluid.id)
+  for (std::uint32_t id : p.id)
     if (id >= nextId) in.mismatch("a particle id past the ids given out");
   return fluid;
 }

@@ -64,5 +64,25 @@ TEST(TimeStep, ViscousStepHoldsTheDiffusionNumber) {
   EXPECT_DOUBLE_EQ(viscousTimeStep(factor, h, 1e-3, 0.5), viscousTimeStep(factor, h, 1e-3));
 }
 
+// The step is the shortest of the bounds: sound (or, for an incompressible solver, the flow
+// alone), acceleration, viscosity, what the caller adds and the scene's cap.
+TEST(TimeStep, TheLongestStepIsTheShortestBound) {
+  StepLimits l;
+  l.h = 0.02;
+  l.soundSpeed = 20.0;
+  l.kinematicViscosity = 1e-6;
+  l.maxDt = 1e-2;
+  EXPECT_DOUBLE_EQ(longestStep(l, 1.0, 9.81), cflTimeStep(l.cfl, l.h, 20.0, 1.0));
+  EXPECT_DOUBLE_EQ(longestStep(l, 1.0, 9.81, 1e-5), 1e-5);
+  EXPECT_DOUBLE_EQ(longestStep(l, 0.0, 1e6), forceTimeStep(l.forceFactor, l.h, 1e6));
+  l.kinematicViscosity = 1.0;
+  EXPECT_DOUBLE_EQ(longestStep(l, 1.0, 9.81), viscousTimeStep(l.viscousFactor, l.h, 1.0));
+  l.kinematicViscosity = 1e-6;
+  l.followsFlow = true;  // no sound: the flow, then gravity, then the cap
+  EXPECT_DOUBLE_EQ(longestStep(l, 1.0, 0.0), flowTimeStep(l.cfl, l.h, 1.0));
+  EXPECT_DOUBLE_EQ(longestStep(l, 0.0, 100.0), forceTimeStep(l.forceFactor, l.h, 100.0));
+  EXPECT_DOUBLE_EQ(longestStep(l, 0.0, 0.0), l.maxDt);
+}
+
 }  // namespace
 }  // namespace sph

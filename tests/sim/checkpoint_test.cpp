@@ -8,6 +8,7 @@
 #include <string>
 
 #include "backends.hpp"
+#include "frame_checks.hpp"
 #include "io/scene_loader.hpp"
 #include "scene_builders.hpp"
 #include "sph/error.hpp"
@@ -16,15 +17,7 @@
 namespace sph {
 namespace {
 
-void expectIdentical(const ParticleFrame& a, const ParticleFrame& b) {
-  EXPECT_EQ(a.time, b.time);
-  EXPECT_EQ(a.id, b.id);
-  EXPECT_EQ(a.position, b.position);  // exact float equality, element by element
-  EXPECT_EQ(a.velocity, b.velocity);
-  EXPECT_EQ(a.density, b.density);
-  EXPECT_EQ(a.pressure, b.pressure);
-  EXPECT_EQ(a.surface, b.surface);
-}
+using testing::expectIdenticalFrames;
 
 std::string stateOf(const Simulation& sim) {
   std::ostringstream out;
@@ -54,7 +47,7 @@ void expectResumedRunMatches(const Scene& scene, int before, int after, int thre
   EXPECT_EQ(resumed.stepCount(), savedStats.steps);
   EXPECT_EQ(resumed.stats().surfaceCount, savedStats.surfaceCount);
   for (int i = 0; i < after; ++i) resumed.step();
-  expectIdentical(original.frame(), resumed.frame());
+  expectIdenticalFrames(original.frame(), resumed.frame());
   EXPECT_EQ(original.stepCount(), resumed.stepCount());
   EXPECT_EQ(original.lastDt(), resumed.lastDt());
   EXPECT_EQ(original.removedCount(), resumed.removedCount());
@@ -104,7 +97,7 @@ TEST(Checkpoint, EmittersOutletsAndProbesPickUpWhereTheyStood) {
   Simulation resumed(scene);
   load(resumed, state);
   resumed.advanceTo(0.4);
-  expectIdentical(original.frame(), resumed.frame());
+  expectIdenticalFrames(original.frame(), resumed.frame());
   EXPECT_EQ(original.outletStats()[0].particles, resumed.outletStats()[0].particles);
   const std::vector<ProbeRow> a = original.takeProbeRows(), b = resumed.takeProbeRows();
   ASSERT_EQ(a.size(), b.size());
@@ -131,7 +124,7 @@ TEST(Checkpoint, LiveParametersChangedBeforeTheSaveComeBack) {
   EXPECT_EQ(resumed.liveParameters().viscosity, live.viscosity);
   EXPECT_EQ(resumed.liveParameters().gravity, live.gravity);
   for (int i = 0; i < 30; ++i) resumed.step();
-  expectIdentical(original.frame(), resumed.frame());
+  expectIdenticalFrames(original.frame(), resumed.frame());
 }
 
 // Loads `state` into a fresh simulation of `scene`, expecting InputError with `expected` in its
@@ -146,7 +139,7 @@ void expectRefused(const Scene& scene, const std::string& state, const std::stri
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
   }
-  expectIdentical(before, sim.frame());
+  expectIdenticalFrames(before, sim.frame());
   EXPECT_EQ(sim.stepCount(), 3u);
   sim.step();  // and it still steps
 }
@@ -193,7 +186,7 @@ ObjectsAfter expectObjectsResume(const Scene& scene, double start, int steps) {
   Simulation resumed(scene, options);
   load(resumed, state);
   for (int i = 0; i < steps; ++i) resumed.step();
-  expectIdentical(original.frame(), resumed.frame());
+  expectIdenticalFrames(original.frame(), resumed.frame());
   const std::vector<ObjectStats> a = original.objectStats(), b = resumed.objectStats();
   EXPECT_EQ(a.size(), b.size());
   for (std::size_t o = 0; o < a.size() && o < b.size(); ++o) {
@@ -255,7 +248,7 @@ TEST(Checkpoint, PacingBoundaryCouplingAndSteeringResume) {
   Simulation resumed(artery);
   load(resumed, state);
   for (int i = 0; i < 60; ++i) resumed.step();
-  expectIdentical(original.frame(), resumed.frame());
+  expectIdenticalFrames(original.frame(), resumed.frame());
 }
 
 TEST(Checkpoint, AStateWithObjectsIsNotTakenByASceneWithout) {

@@ -8,6 +8,7 @@
 
 #include "backend/cpu_parallel.hpp"
 #include "backends.hpp"
+#include "frame_checks.hpp"
 #include "io/scene_loader.hpp"
 #include "scene_builders.hpp"
 #include "sph/simulation.hpp"
@@ -27,21 +28,14 @@ ParticleFrame runFor(int threads, int steps) {
   return sim.frame();
 }
 
-void expectIdentical(const ParticleFrame& a, const ParticleFrame& b) {
-  EXPECT_EQ(a.time, b.time);
-  EXPECT_EQ(a.id, b.id);
-  EXPECT_EQ(a.position, b.position);  // exact float equality, element by element
-  EXPECT_EQ(a.velocity, b.velocity);
-  EXPECT_EQ(a.density, b.density);
-  EXPECT_EQ(a.pressure, b.pressure);
-}
+using testing::expectIdenticalFrames;
 
 TEST(Determinism, SameThreadCountSameBytes) {
-  expectIdentical(runFor(2, 200), runFor(2, 200));
+  expectIdenticalFrames(runFor(2, 200), runFor(2, 200));
 }
 
 TEST(Determinism, OneAndTwoThreadsAgree) {
-  expectIdentical(runFor(1, 200), runFor(2, 200));
+  expectIdenticalFrames(runFor(1, 200), runFor(2, 200));
 }
 
 // The same through the library's option: its steps use the threads asked for, and leave the
@@ -60,7 +54,7 @@ TEST(Determinism, TheThreadsOptionGivesTheSameBytesAndKeepsTheCallersSetting) {
     EXPECT_EQ(backend::threadCount(), 2);
     frames.push_back(sim.frame());
   }
-  expectIdentical(frames[0], frames[1]);
+  expectIdenticalFrames(frames[0], frames[1]);
   backend::setThreadCount(0);
   SimulationOptions tooMany;
   tooMany.threads = 100000;
@@ -88,9 +82,9 @@ TEST(Determinism, WithObjectsInTheirThreadSameBytes) {
   scene.objectEngine.rate = 0.5;
   const double start = 0.06;  // the clamp starts at 0.05 s
   const ParticleFrame a = squeeze(scene, start, 2, 100), b = squeeze(scene, start, 2, 100);
-  expectIdentical(a, b);
+  expectIdenticalFrames(a, b);
   EXPECT_EQ(a.kind, b.kind);
-  expectIdentical(a, squeeze(scene, start, 1, 100));
+  expectIdenticalFrames(a, squeeze(scene, start, 1, 100));
 }
 
 // The same under the incompressible solver with the objects as boundary particles: their
@@ -102,8 +96,8 @@ TEST(Determinism, WithObjectsAsBoundaryParticlesSameBytes) {
   scene.interaction.coupling = ObjectCoupling::Boundary;
   const double start = 0.055;
   const ParticleFrame a = squeeze(scene, start, 2, 20);
-  expectIdentical(a, squeeze(scene, start, 2, 20));
-  expectIdentical(a, squeeze(scene, start, 1, 20));
+  expectIdenticalFrames(a, squeeze(scene, start, 2, 20));
+  expectIdenticalFrames(a, squeeze(scene, start, 1, 20));
 }
 
 TEST(Determinism, TheRunMovedParticles) {
@@ -119,7 +113,7 @@ TEST(Determinism, WithEmittersAndOutletsSameBytes) {
   const double start = testing::kSanitized ? 0.005 : 0.03;
   const int steps = testing::kSanitized ? 10 : 40;
   const ParticleFrame a = squeeze(scene, start, 2, steps);
-  expectIdentical(a, squeeze(scene, start, 1, steps));
+  expectIdenticalFrames(a, squeeze(scene, start, 1, steps));
 }
 
 }  // namespace

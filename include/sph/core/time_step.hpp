@@ -31,6 +31,30 @@ inline double viscousTimeStep(double factor, double h, double kinematicViscosity
   return diffusivity > 0.0 ? factor * h * h / diffusivity : HUGE_VAL;
 }
 
+// What bounds a run's steps, fixed until a live parameter changes (sim/calibration fills it).
+struct StepLimits {
+  bool followsFlow = false;  // incompressible: the step follows the flow, no sound speed bounds it
+  double cfl = 0.4;
+  double h = 0.0;
+  double soundSpeed = 0.0;
+  double forceFactor = 0.25;
+  double viscousFactor = 0.125;
+  double kinematicViscosity = 0.0;
+  double wallFriction = 1.0;
+  double maxDt = HUGE_VAL;
+};
+
+// The longest step every bound allows at the fluid's largest speed and acceleration;
+// `otherBound`: what else limits it (the objects').
+inline double longestStep(const StepLimits& l, double maxSpeed, double maxAcceleration,
+                          double otherBound = HUGE_VAL) {
+  const double motion = l.followsFlow ? flowTimeStep(l.cfl, l.h, maxSpeed)
+                                      : cflTimeStep(l.cfl, l.h, l.soundSpeed, maxSpeed);
+  return std::min({motion, forceTimeStep(l.forceFactor, l.h, maxAcceleration),
+                   viscousTimeStep(l.viscousFactor, l.h, l.kinematicViscosity, l.wallFriction),
+                   otherBound, l.maxDt});
+}
+
 // A spring of stiffness k (scaled at most by `peakScale`) on a mass m oscillates at
 // ω = sqrt(k peakScale / m); an explicit step of 1/ω resolves it (contacts: Meteer 2011, §8.3).
 inline double springTimeStep(double mass, double stiffness, double peakScale) {
