@@ -12,6 +12,8 @@
 
 #include "io/scene_schema.hpp"
 #include "scene_test_support.hpp"
+#include "sph/error.hpp"
+#include "sph/scene_file.hpp"
 
 namespace sph::io {
 namespace {
@@ -213,6 +215,30 @@ TEST(SceneJson, RoundTripsPeriodicAxes) {
   EXPECT_EQ(written["domain"]["periodic"], "xz");
   expectScenesEqual(parseScene(written, kSource), original);
   EXPECT_EQ(sceneToJson(parseScene(minimalSceneJson(), kSource))["domain"]["periodic"], "");
+}
+
+// The installed reader (sph/scene_file.hpp) takes and gives text, not JSON types.
+TEST(PublicSceneFile, TextRoundTripsAndErrorsNameTheSource) {
+  const Scene original = sph::parseScene(completeSceneJson().dump(), kSource);
+  expectScenesEqual(sph::parseScene(sph::sceneToJsonText(original), kSource), original);
+  const Scene overridden =
+      sph::parseScene(minimalSceneJson().dump(), kSource, {"fluid.spacing=0.02"});
+  EXPECT_EQ(overridden.fluid.spacing, 0.02);
+  try {
+    sph::parseScene("{\"domain\": ", "from_python");
+    FAIL() << "accepted JSON cut short";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("from_python: invalid JSON", 0), 0u) << e.what();
+  }
+  json negative = minimalSceneJson();
+  negative["fluid"]["spacing"] = -1;
+  try {
+    sph::parseScene(negative.dump(), "from_python");
+    FAIL() << "accepted a negative spacing";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("from_python: fluid.spacing: expected", 0), 0u)
+        << e.what();
+  }
 }
 
 TEST(SceneJson, RoundTripsTheCompleteScene) {

@@ -35,7 +35,7 @@ for d in lib lib64 lib/x86_64-linux-gnu lib/aarch64-linux-gnu; do
   if [ -f "$prefix/$d/libsph.a" ] || [ -f "$prefix/$d/libsph.so" ]; then libdir="$d"; break; fi
 done
 [ -n "$libdir" ] || fail "no libsph.a (or libsph.so) installed under $prefix/lib*"
-for h in sph/simulation.hpp sph/scene.hpp sph/core/options.hpp; do
+for h in sph/simulation.hpp sph/scene.hpp sph/scene_file.hpp sph/core/options.hpp; do
   [ -f "$prefix/include/$h" ] || fail "header $h not installed under $prefix/include"
 done
 for f in sphConfig.cmake sphConfigVersion.cmake sphTargets.cmake; do

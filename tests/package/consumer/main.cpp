@@ -3,6 +3,7 @@
 #include <exception>
 
 #include <sph/scene.hpp>
+#include <sph/scene_file.hpp>
 #include <sph/simulation.hpp>
 
 int main() {
@@ -18,7 +19,14 @@ int main() {
     scene.fluid.blocks.push_back(block);
     scene.output.format = sph::FrameFormat::None;
 
-    sph::Simulation sim(scene);
+    // The same scene through the public scene reader, written and read back.
+    const sph::Scene reread = sph::parseScene(sph::sceneToJsonText(scene), "consumer.json");
+    if (reread.fluid.blocks.size() != 1 || reread.fluid.spacing != 0.01) {
+      std::fprintf(stderr, "consumer: the scene did not survive sceneToJsonText/parseScene\n");
+      return 1;
+    }
+
+    sph::Simulation sim(reread);
     for (int i = 0; i < 5; ++i) sim.step();
 
     std::printf("consumer: %llu steps, %llu fluid particles, t = %g s\n",
