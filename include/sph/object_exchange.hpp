@@ -50,7 +50,9 @@ class ObjectExchange {
   // --- the engine's side ---
   // The buffer to fill; only the engine touches it until publish().
   ObjectSurface& back() { return back_; }
-  // Makes back() the publication the fluid reads next.
+  // Makes back() the publication the fluid reads next. Throws std::out_of_range on a handle
+  // not below handleCount() or a negative object id, std::invalid_argument when the arrays
+  // differ in length; nothing is published then.
   void publish();
   // The mean force (N) on each particle, by handle, over the fluid steps deposited since the
   // last call; returns the time they span (s). When no fluid step was deposited since, gives

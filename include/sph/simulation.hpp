@@ -14,6 +14,7 @@
 
 #include "sph/fluid_draw.hpp"
 #include "sph/frame.hpp"
+#include "sph/object_exchange.hpp"
 #include "sph/scene.hpp"
 #include "sph/stats.hpp"
 
@@ -140,6 +141,19 @@ class Simulation {
   void step(double until = std::numeric_limits<double>::infinity());
   // Steps until time() reaches t exactly.
   void advanceTo(double t);
+
+  // Couples objects moved by an engine of your own (Meteer 2011, §4.3): from the next step on,
+  // the fluid reads their surface particles from the newest publication of `exchange` and
+  // deposits its force on each of them there (sph/object_exchange.hpp), pushing them by the
+  // scene's `interaction` (contact forces, or boundary coupling under DFSPH) and pushed back
+  // alike. Your engine takes the forces, steps and publishes in its own thread or between calls
+  // to step(); the time step keeps its fastest particle from crossing a quarter of a fluid
+  // particle's radius in one. Its objects are its own: not in frames, objectStats() gives each
+  // one's fluid force alone (named by its id), and saveState refuses. A step throws
+  // std::invalid_argument on a publication with a particle whose contact reach passes the
+  // fluid's support radius. Throws std::logic_error when the scene has objects of its own or an
+  // engine is attached already, std::invalid_argument on a null exchange.
+  void attachObjectEngine(std::shared_ptr<ObjectExchange> exchange);
 
   // An external acceleration (m/s², added to gravity) for each fluid particle, by id:
   // `byId` holds x, y, z for ids 0 .. fluidParticles-1. It stays until replaced; an empty

@@ -32,10 +32,18 @@ ObjectExchange::ObjectExchange(std::size_t handleCount)
       lastMean_(handleCount, Vec3{0, 0, 0}) {}
 
 void ObjectExchange::publish() {
-  for (std::uint32_t h : back_.handle) {
-    if (h >= handleCount_)
-      throw std::out_of_range("ObjectExchange::publish: handle " + std::to_string(h) +
+  const std::size_t n = back_.handle.size();
+  if (back_.position.size() != n || back_.velocity.size() != n || back_.normal.size() != n ||
+      back_.object.size() != n || back_.cut.size() != n)
+    throw std::invalid_argument(
+        "ObjectExchange::publish: the surface's arrays differ in length (fill it with add)");
+  for (std::size_t k = 0; k < n; ++k) {
+    if (back_.handle[k] >= handleCount_)
+      throw std::out_of_range("ObjectExchange::publish: handle " + std::to_string(back_.handle[k]) +
                               " is not below the handle count " + std::to_string(handleCount_));
+    if (back_.object[k] < 0)
+      throw std::out_of_range("ObjectExchange::publish: object id " +
+                              std::to_string(back_.object[k]) + " is negative");
   }
   std::lock_guard<std::mutex> lock(frontMutex_);
   std::swap(front_, back_);
@@ -87,8 +95,7 @@ void ObjectExchange::restore(Snapshot s) {
   for (std::uint32_t h : s.front.handle)
     if (h >= handleCount_)
       throw std::invalid_argument("ObjectExchange::restore: handle " + std::to_string(h) +
-                                  " is not below the handle count " +
-                                  std::to_string(handleCount_));
+                                  " is not below the handle count " + std::to_string(handleCount_));
   {
     std::lock_guard<std::mutex> lock(frontMutex_);
     front_ = std::move(s.front);

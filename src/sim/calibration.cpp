@@ -174,7 +174,7 @@ double latticeKernelSum(KernelKind kernel, double h, double spacing) {
   }
 }
 
-Calibration calibrate(const Scene& scene) {
+Calibration calibrate(const Scene& scene, bool attachedEngine) {
   const FluidDesc& f = scene.fluid;
   const CalibrationDesc& c = scene.calibration;
   Calibration out;
@@ -215,7 +215,7 @@ Calibration calibrate(const Scene& scene) {
   out.surfaceThreshold = f.surfaceThreshold ? *f.surfaceThreshold
                                             : kTutorialSurfaceThresholdTimesH / out.supportRadius;
 
-  if (!scene.objects.empty()) calibrateContact(scene, out);
+  if (!scene.objects.empty() || attachedEngine) calibrateContact(scene, out);
 
   // The fluid starts at rest, under gravity alone.
   out.initialDt =

@@ -14,7 +14,9 @@ namespace sph::sim {
 // Mass so that a particle inside the initial lattice has exactly the rest density; speed of
 // sound ten times the largest expected speed; stiffness from it; the first time step.
 // Throws InputError (naming the scene file and key) when a value cannot be derived.
-Calibration calibrate(const Scene& scene);
+// `attachedEngine`: objects of an engine attached to the simulation (no scene objects) take
+// part, so the contact with them is calibrated as for the scene's own.
+Calibration calibrate(const Scene& scene, bool attachedEngine = false);
 
 fluid::FluidParameters fluidParameters(const Scene& scene, const Calibration& calibration);
 // Without its periodic axes, which need the kernel's support: engineSetup adds them.

@@ -53,12 +53,12 @@ void Simulation::setLiveParameters(const LiveParameters& values) {
   next.calibration.speedOfSound =
       soundSpeedForStiffness(next.fluid.eos, values.stiffness, next.fluid.restDensity);
 
-  Calibration calibration = sim::calibrate(next);
+  Calibration calibration = sim::calibrate(next, s.externalExchange != nullptr);
   calibration.fluidParticles = s.calibration.fluidParticles;
   calibration.boundaryParticles = s.calibration.boundaryParticles;
   calibration.objectParticles = s.calibration.objectParticles;
   const interaction::InteractionParameters interaction =
-      s.objects ? sim::interactionParameters(next, calibration) : s.interactionParams;
+      s.coupled() ? sim::interactionParameters(next, calibration) : s.interactionParams;
   if (s.objects) {
     s.objects->wait();
     s.checkContactReach(s.objects->world(), interaction);

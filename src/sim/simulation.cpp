@@ -49,6 +49,25 @@ void Simulation::step(double until) {
   profile.probes += timedMs([&] { s.sampleProbes(); });
 }
 
+void Simulation::attachObjectEngine(std::shared_ptr<ObjectExchange> exchange) {
+  Impl& s = *impl_;
+  if (!exchange) throw std::invalid_argument("attachObjectEngine: expected an exchange, got null");
+  if (s.objects)
+    throw std::logic_error("attachObjectEngine: " + s.scene.sourcePath +
+                           " has objects of its own, moved by the built-in engine");
+  if (s.externalExchange)
+    throw std::logic_error("attachObjectEngine: an object engine is attached already");
+  // The contact with the attached objects is calibrated as for a scene's own objects.
+  Calibration calibration = sim::calibrate(s.scene, /*attachedEngine=*/true);
+  calibration.fluidParticles = s.calibration.fluidParticles;
+  calibration.boundaryParticles = s.calibration.boundaryParticles;
+  calibration.initialDt = s.calibration.initialDt;
+  s.calibration = calibration;
+  s.interactionParams = sim::interactionParameters(s.scene, s.calibration);
+  s.externalExchange = std::move(exchange);
+  s.seenPublication = 0;
+}
+
 void Simulation::setExternalAcceleration(const std::vector<float>& byId) {
   if (byId.empty()) {
     impl_->engine->setExternalAcceleration({});

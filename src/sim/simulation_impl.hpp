@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -62,8 +63,14 @@ struct Simulation::Impl {
     if (!surfaceMeasured && neighboursListed) engine->measureSurface();
     surfaceMeasured = true;
   }
-  // The interaction with objects; objects is null when the scene has none.
+  // The interaction with objects; objects is null when the scene has none. An engine of the
+  // user's own, attached instead (Simulation::attachObjectEngine), is known only through its
+  // exchange.
   std::unique_ptr<sim::ObjectRunner> objects;
+  std::shared_ptr<ObjectExchange> externalExchange;
+  std::vector<std::int32_t> externalObjectOfHandle;  // from the newest publication read
+  bool coupled() const { return objects || externalExchange; }
+  ObjectExchange& exchange() { return objects ? objects->exchange() : *externalExchange; }
   interaction::InteractionParameters interactionParams{};
   std::uint64_t seenPublication = 0;
   float objectMaxSpeed = 0.0f;
@@ -238,8 +245,15 @@ struct Simulation::Impl {
   // Meteer 2011, §7, step 2: the engine's newest surface particles. Boundary particles are
   // read before the density pass that counts them; contact partners when the contacts are
   // computed, the engine's step having run beside the fluid's passes until then.
-  bool objectsAsBoundary() const { return objects && interactionParams.boundary; }
+  bool objectsAsBoundary() const { return coupled() && interactionParams.boundary; }
   void receiveObjects() {
+    if (!objects) {
+      exchange().readIfNew(seenPublication, [&](const ObjectSurface& surface) {
+        checkExternalSurface(surface);
+        objectMaxSpeed = engine->setObjectSurface(surface, interactionParams);
+      });
+      return;
+    }
     objects->wait();
     objects->exchange().readIfNew(seenPublication, [&](const ObjectSurface& surface) {
       objectMaxSpeed = engine->setObjectSurface(surface, interactionParams);
@@ -249,6 +263,27 @@ struct Simulation::Impl {
     for (std::size_t o = 0; o < contactForceOnObject.size(); ++o)
       contactForceOnObject[o] = objects->world().contactForce(o);
   }
+  // An attached engine's publication (whose handles and object ids publish() checked): radii
+  // whose contact reach the fluid's grid can search. Remembers each handle's object.
+  void checkExternalSurface(const ObjectSurface& surface) {
+    const auto refuse = [&](const std::string& what) {
+      throw std::invalid_argument("attached object engine: its publication at t = " +
+                                  formatNumber(surface.time) + " s " + what);
+    };
+    externalObjectOfHandle.assign(exchange().handleCount(), -1);
+    std::int32_t objectCount = 0;
+    for (std::size_t k = 0; k < surface.size(); ++k) {
+      const float reach = interaction::contactReach(interactionParams, surface.position[k].w);
+      if (!(reach <= params.h))
+        refuse("has a particle of radius " + formatNumber(surface.position[k].w) +
+               " m whose contact reach, " + formatNumber(reach) +
+               " m, passes the fluid's support radius h = " + formatNumber(params.h) + " m");
+      externalObjectOfHandle[surface.handle[k]] = surface.object[k];
+      objectCount = std::max(objectCount, surface.object[k] + 1);
+    }
+    if (fluidForceOnObject.size() < std::size_t(objectCount))
+      fluidForceOnObject.resize(std::size_t(objectCount), Vec3{0, 0, 0});
+  }
   void receiveBoundaryObjects() {
     if (objectsAsBoundary()) receiveObjects();
   }
@@ -256,7 +291,7 @@ struct Simulation::Impl {
   // Meteer 2011, §7, steps 3-4: collisions and contact forces (with boundary coupling, only
   // whether each particle is still inside its container).
   void interact() {
-    if (!objects) return;
+    if (!coupled()) return;
     if (!objectsAsBoundary()) receiveObjects();
     contactPairs = engine->computeContacts(interactionParams);
   }
@@ -265,7 +300,7 @@ struct Simulation::Impl {
   // coupling the reactions of the pressure the solves have just given, at the positions they
   // were computed at.
   void collectObjectForces() {
-    if (!objects) return;
+    if (!coupled()) return;
     if (objectsAsBoundary()) engine->addBoundaryForces();
     objectForces = engine->downloadObjectForces();
     if (objectsAsBoundary()) {  // the pairs within h that pushed
@@ -276,11 +311,17 @@ struct Simulation::Impl {
 
   // The engine receives this step's forces and takes its own step(s) over dt.
   void advanceObjects() {
-    if (!objects) return;
+    if (!coupled()) return;
     const std::size_t n = objectForces.handle.size();
-    objects->exchange().depositForces(objectForces.handle.data(), objectForces.force.data(), n, dt);
-    const objects::ParticleState& particles = objects->world().particles();
+    exchange().depositForces(objectForces.handle.data(), objectForces.force.data(), n, dt);
     std::fill(fluidForceOnObject.begin(), fluidForceOnObject.end(), Vec3{0, 0, 0});
+    if (!objects) {  // the attached engine takes the forces and steps when it will
+      for (std::size_t k = 0; k < n; ++k)
+        fluidForceOnObject[externalObjectOfHandle[objectForces.handle[k]]] +=
+            xyz(objectForces.force[k]);
+      return;
+    }
+    const objects::ParticleState& particles = objects->world().particles();
     for (std::size_t k = 0; k < n; ++k)
       fluidForceOnObject[particles.object[objectForces.handle[k]]] += xyz(objectForces.force[k]);
     objects->advance(dt);
@@ -407,7 +448,7 @@ struct Simulation::Impl {
     double next = scene.time.fixedDt
                       ? *scene.time.fixedDt
                       : longestStep(sim::stepLimits(scene, calibration), m.maxSpeed,
-                                    m.maxAcceleration, objects ? objectTimeStep() : HUGE_VAL);
+                                    m.maxAcceleration, coupled() ? objectTimeStep() : HUGE_VAL);
     const double remaining = until - time;
     // Under a nanosecond (the shortest time.fixed_dt a scene may ask for) the fluid has blown
     // up: its speeds or accelerations are beyond any scene's, and the run would crawl forever

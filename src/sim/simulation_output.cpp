@@ -98,6 +98,16 @@ void appendSolids(FrameBuilder& b, const sim::FluidEngine& engine, const sim::Ob
 std::vector<ObjectStats> Simulation::objectStats() const {
   const Impl& s = *impl_;
   std::vector<ObjectStats> out;
+  if (s.externalExchange) {  // what the fluid knows of an attached engine's objects
+    for (std::size_t o = 0; o < s.fluidForceOnObject.size(); ++o) {
+      ObjectStats stats;
+      stats.name = "object " + std::to_string(o);
+      const Vec3 f = s.fluidForceOnObject[o];
+      stats.fluidForce = {f.x, f.y, f.z};
+      out.push_back(stats);
+    }
+    return out;
+  }
   if (!s.objects) return out;
   s.objects->wait();
   const objects::ObjectWorld& world = s.objects->world();

@@ -5,6 +5,7 @@
 // with the fluid — so that a simulation built from the same scene and given the state steps on
 // exactly as the one that saved it. Each part is read whole and checked before any is applied.
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "sim/simulation_impl.hpp"
@@ -18,6 +19,10 @@ using sim::ObjectsState;
 
 void Simulation::saveState(std::ostream& out) const {
   const Impl& s = *impl_;
+  if (s.externalExchange)
+    throw std::logic_error(
+        "saveState: an attached object engine's objects are its own state, not the "
+        "simulation's: a saved state could not put them back");
   sim::StateWriter w;
   sim::fingerprintOf(s.scene, s.initialFluid, s.engine->wallCount(), s.calibration.objectParticles)
       .write(w);
