@@ -26,12 +26,12 @@ namespace detail {
 // The force on fluid particle (xf, vf) from object particle (xo, vo, radius, cut): Meteer 2011,
 // eqs. 13-16 through the influence sphere, the spring scaled by the distance function.
 SPH_HD Vec3 fluidContactForce(const InteractionParameters& p, Vec3 xf, Vec3 vf, Vec4 xo, Vec4 vo) {
-  const float reach = contactReach(p, xo.w);
+  const float reach = contactReach(p, radiusOf(xo));
   const Vec3 offset = xf - xyz(xo);
   const float r2 = lengthSquared(offset);
   if (r2 >= reach * reach) return Vec3{0.0f, 0.0f, 0.0f};
   const float scale = p.distance(realSqrt(r2) / reach);
-  const bool damped = !(p.cutAwareDamping && vo.w != 0.0f);
+  const bool damped = !(p.cutAwareDamping && isCut(vo));
   return demContactForce(p.contact, offset, xyz(vo) - vf, reach, scale, damped);
 }
 
@@ -95,7 +95,7 @@ std::size_t computeContacts(fluid::FluidParticles<B>& fluid, const fluid::Grid<B
                 if (!p.boundary) force += detail::fluidContactForce(p, xi, vi, xo, vo);
                 const Vec4 no = readOnly(objectNormal + o);
                 // Torn particles (w of the velocity) have no surface to be on a side of.
-                if (container >= 0 && int(no.w) == container && vo.w == 0.0f) {
+                if (container >= 0 && objectOf(no) == container && !isCut(vo)) {
                   const Vec3 offset = xi - xyz(xo);
                   const float r2 = lengthSquared(offset);
                   if (r2 < reach2) {
@@ -135,7 +135,7 @@ std::size_t computeContacts(fluid::FluidParticles<B>& fluid, const fluid::Grid<B
         Vec3 force{0.0f, 0.0f, 0.0f};
         float touching = 0.0f;
         if (!p.boundary && fluid::nearGrid(spec, xyz(xo))) {
-          const float reach = contactReach(p, xo.w);
+          const float reach = contactReach(p, radiusOf(xo));
           fluid::forEachNeighborWithin(spec, fluidCellStart, xyz(xo), reach, [&](std::uint32_t j) {
             const Vec3 xj = xyz(readOnly(position + j));
             if (lengthSquared(xj - xyz(xo)) >= reach * reach) return;

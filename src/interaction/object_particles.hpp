@@ -32,6 +32,27 @@ SPH_HD float contactReach(const InteractionParameters& p, float objectRadius) {
   return p.fluidRadius + p.influenceRatio * objectRadius;
 }
 
+// What rides in the w of an object particle's vectors, packed so that a GPU loads each as one
+// 16-byte word: the radius (position), whether it is torn (velocity), its object (normal).
+SPH_HD Vec4 packPosition(Vec3 x, float radius) {
+  return makeVec4(x, radius);
+}
+SPH_HD float radiusOf(const Vec4& position) {
+  return position.w;
+}
+SPH_HD Vec4 packVelocity(Vec3 v, bool cut) {
+  return makeVec4(v, cut ? 1.0f : 0.0f);
+}
+SPH_HD bool isCut(const Vec4& velocity) {
+  return velocity.w != 0.0f;
+}
+SPH_HD Vec4 packNormal(Vec3 n, std::int32_t object) {
+  return makeVec4(n, float(object));  // exact for ids below 2²⁴
+}
+SPH_HD std::int32_t objectOf(const Vec4& normal) {
+  return std::int32_t(normal.w);
+}
+
 // Written when the engine publishes (prepareObjectParticles), read by computeContacts.
 template <class B>
 struct ObjectParticles {

@@ -27,7 +27,7 @@ float prepareObjectParticles(ObjectParticles<B>& objects, fluid::BoundaryParticl
   // torn off and falling away would otherwise stretch the grid over its whole fall.
   float reach = 0.0f;
   for (std::size_t k = 0; k < surface.size(); ++k)
-    reach = fmaxf(reach, contactReach(params, surface.position[k].w));
+    reach = fmaxf(reach, contactReach(params, radiusOf(surface.position[k])));
   const float margin = params.boundary ? fmaxf(reach, fluidParams.h) : reach;
   std::vector<std::uint32_t> kept;
   for (std::size_t k = 0; k < surface.size(); ++k) {
@@ -64,9 +64,9 @@ float prepareObjectParticles(ObjectParticles<B>& objects, fluid::BoundaryParticl
   std::vector<std::uint32_t> handle(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t s = kept[order[k]];
-    position[k] = surface.position[s];
-    velocity[k] = makeVec4(xyz(surface.velocity[s]), surface.cut[s] ? 1.0f : 0.0f);
-    normal[k] = makeVec4(xyz(surface.normal[s]), float(surface.object[s]));
+    position[k] = packPosition(xyz(surface.position[s]), radiusOf(surface.position[s]));
+    velocity[k] = packVelocity(xyz(surface.velocity[s]), surface.cut[s] != 0);
+    normal[k] = packNormal(xyz(surface.normal[s]), surface.object[s]);
     handle[k] = surface.handle[s];
   }
   B::upload(objects.position, position.data(), n);
@@ -90,7 +90,7 @@ float prepareObjectParticles(ObjectParticles<B>& objects, fluid::BoundaryParticl
     // intact wall's.
     if (surface.cut[k]) continue;
     const Vec3 p = xyz(surface.position[k]);
-    const float r = contactReach(params, surface.position[k].w);
+    const float r = contactReach(params, radiusOf(surface.position[k]));
     Vec4& lo = bounds[2 * std::size_t(surface.object[k])];
     Vec4& hi = bounds[2 * std::size_t(surface.object[k]) + 1];
     lo = Vec4{fminf(lo.x, p.x - r), fminf(lo.y, p.y - r), fminf(lo.z, p.z - r), 0};
