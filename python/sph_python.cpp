@@ -1,0 +1,201 @@
+// The Python module sph._sph: scenes, simulations and their particles as numpy arrays. The
+// Python package python/sph/__init__.py adds what is easier said in Python (scenes from dicts,
+// dotted keys, run with a callback).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sph/error.hpp"
+#include "sph/scene_file.hpp"
+#include "sph/simulation.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+// A copy of `values` as a numpy array of `rows` rows of `columns` (1: a flat array).
+template <class T>
+py::array_t<T> toArray(const std::vector<T>& values, std::size_t rows, std::size_t columns) {
+  std::vector<py::ssize_t> shape{py::ssize_t(rows)};
+  if (columns > 1) shape.push_back(py::ssize_t(columns));
+  py::array_t<T> out(shape);
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+py::dict particles(const sph::Simulation& sim, bool includeBoundary) {
+  sph::ParticleFrame f;
+  {
+    py::gil_scoped_release release;
+    f = sim.frame(includeBoundary);
+  }
+  const std::size_t n = f.size();
+  py::dict out;
+  out["id"] = toArray(f.id, n, 1);
+  out["position"] = toArray(f.position, n, 3);
+  out["velocity"] = toArray(f.velocity, n, 3);
+  out["density"] = toArray(f.density, n, 1);
+  out["pressure"] = toArray(f.pressure, n, 1);
+  out["kind"] = toArray(f.kind, n, 1);
+  out["object"] = toArray(f.object, n, 1);
+  out["surface"] = toArray(f.surface, n, 1);
+  return out;
+}
+
+py::dict calibration(const sph::Simulation& sim) {
+  const sph::Calibration& c = sim.calibration();
+  py::dict out;
+  out["spacing"] = c.spacing;
+  out["support_radius"] = c.supportRadius;
+  out["mass"] = c.mass;
+  out["max_expected_speed"] = c.maxExpectedSpeed;
+  out["sound_speed"] = c.soundSpeed;
+  out["stiffness"] = c.stiffness;
+  out["kinematic_viscosity"] = c.kinematicViscosity;
+  out["initial_dt"] = c.initialDt;
+  out["fluid_particles"] = c.fluidParticles;
+  out["object_particles"] = c.objectParticles;
+  out["boundary_particles"] = c.boundaryParticles;
+  return out;
+}
+
+py::dict objectStats(const sph::ObjectStats& o) {
+  py::dict out;
+  out["name"] = o.name;
+  out["mass"] = o.mass;
+  out["centre_of_mass"] = o.centreOfMass;
+  out["velocity"] = o.velocity;
+  out["fluid_force"] = o.fluidForce;
+  out["contact_force"] = o.contactForce;
+  out["broken_springs"] = o.brokenSprings;
+  return out;
+}
+
+py::dict stats(const sph::Simulation& sim) {
+  const sph::FrameStats s = sim.stats();
+  py::dict out;
+  out["time"] = s.time;
+  out["steps"] = s.steps;
+  out["dt"] = s.dt;
+  out["fluid_count"] = s.fluidCount;
+  out["boundary_count"] = s.boundaryCount;
+  out["kinetic_energy"] = s.kineticEnergy;
+  out["mean_density"] = s.meanDensity;
+  out["average_density_error"] = s.averageDensityError;
+  out["max_density_error"] = s.maxDensityError;
+  out["max_speed"] = s.maxSpeed;
+  out["surface_count"] = s.surfaceCount;
+  out["leaked_count"] = s.leakedCount;
+  out["removed_count"] = s.removedCount;
+  out["emitted_count"] = s.emittedCount;
+  out["density_iterations"] = s.densityIterations;
+  out["divergence_iterations"] = s.divergenceIterations;
+  out["unconverged_solves"] = s.unconvergedSolves;
+  py::list objects;
+  for (const sph::ObjectStats& o : s.objects) objects.append(objectStats(o));
+  out["objects"] = objects;
+  return out;
+}
+
+py::dict liveParameters(const sph::Simulation& sim) {
+  const sph::LiveParameters p = sim.liveParameters();
+  py::dict out;
+  out["viscosity"] = p.viscosity;
+  out["stiffness"] = p.stiffness;
+  out["gravity"] = p.gravity;
+  out["surface_tension"] = p.surfaceTension;
+  out["influence_ratio"] = p.influenceRatio;
+  return out;
+}
+
+// Changes the live parameters named in `changes`; a name that is not one is refused.
+void setLiveParameters(sph::Simulation& sim, const py::dict& changes) {
+  sph::LiveParameters p = sim.liveParameters();
+  for (const auto& [key, value] : changes) {
+    const std::string name = py::cast<std::string>(key);
+    if (name == "viscosity")
+      p.viscosity = py::cast<double>(value);
+    else if (name == "stiffness")
+      p.stiffness = py::cast<double>(value);
+    else if (name == "gravity")
+      p.gravity = py::cast<sph::Vec3d>(value);
+    else if (name == "surface_tension")
+      p.surfaceTension = py::cast<double>(value);
+    else if (name == "influence_ratio")
+      p.influenceRatio = py::cast<double>(value);
+    else
+      throw py::key_error("not a live parameter: '" + name +
+                          "'; they are viscosity, stiffness, gravity, surface_tension, "
+                          "influence_ratio");
+  }
+  sim.setLiveParameters(p);
+}
+
+sph::Backend backendNamed(const std::string& name) {
+  if (name == "cpu") return sph::Backend::Cpu;
+  if (name == "cuda") return sph::Backend::Cuda;
+  if (name == "auto") return sph::Backend::Auto;
+  throw py::value_error("backend: expected \"cpu\", \"cuda\" or \"auto\", got \"" + name + "\"");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_sph, m) {
+  m.doc() = "SPH fluids and the objects in them (the sph library)";
+  py::register_exception<sph::InputError>(m, "SceneError", PyExc_ValueError);
+  py::register_exception<sph::SimulationFailure>(m, "SimulationFailure", PyExc_RuntimeError);
+  py::register_exception<sph::OutputError>(m, "OutputError", PyExc_OSError);
+
+  py::class_<sph::Scene>(m, "Scene", "A checked scene: read with load_scene or scene_from_dict.")
+      .def_property_readonly("source", [](const sph::Scene& s) { return s.sourcePath; })
+      .def("to_json", &sph::sceneToJsonText,
+           "Every key of the scene, defaults included, as JSON text.");
+
+  m.def(
+      "_load_scene",
+      [](const std::string& path, const std::vector<std::string>& overrides) {
+        return sph::loadScene(path, overrides);
+      },
+      py::arg("path"), py::arg("overrides"));
+  m.def("_parse_scene", &sph::parseScene, py::arg("text"), py::arg("source"), py::arg("overrides"));
+
+  py::class_<sph::Simulation>(m, "Simulation")
+      .def(py::init([](const sph::Scene& scene, const std::string& backend, int threads) {
+             sph::SimulationOptions options;
+             options.backend = backendNamed(backend);
+             options.threads = threads;
+             return std::make_unique<sph::Simulation>(scene, options);
+           }),
+           py::arg("scene"), py::arg("backend") = "cpu", py::arg("threads") = 0,
+           "A simulation of `scene` on `backend` (\"cpu\", \"cuda\" or \"auto\"); threads 0: "
+           "every hardware thread. Results do not depend on the thread count.")
+      .def(
+          "step", [](sph::Simulation& s) { s.step(); }, py::call_guard<py::gil_scoped_release>(),
+          "One time step.")
+      .def("advance_to", &sph::Simulation::advanceTo, py::arg("time"),
+           py::call_guard<py::gil_scoped_release>(),
+           "Steps until the simulated time reaches `time` (the last step is shortened to land "
+           "on it).")
+      .def_property_readonly("time", &sph::Simulation::time)
+      .def_property_readonly("step_count", &sph::Simulation::stepCount)
+      .def_property_readonly("last_dt", &sph::Simulation::lastDt)
+      .def_property_readonly("fluid_count", &sph::Simulation::fluidCount)
+      .def_property_readonly("removed_count", &sph::Simulation::removedCount)
+      .def_property_readonly("leaked_count", &sph::Simulation::leakedCount)
+      .def_property_readonly("backend", &sph::Simulation::backendName)
+      .def_property_readonly(
+          "calibration", &calibration,
+          "The values derived from the scene (spacing, mass, speed of sound...).")
+      .def("stats", &stats, "The statistics of one row of stats.csv, with the objects'.")
+      .def("particles", &particles, py::arg("include_boundary") = false,
+           "Copies of the particles' arrays, ordered by id: id, position (n, 3), velocity "
+           "(n, 3), density (kg/m³), pressure (Pa), kind (0 fluid, 1 wall, 2 object), "
+           "object (-1 if none), surface (1 on the free surface).")
+      .def_property("live_parameters", &liveParameters, &setLiveParameters,
+                    "The parameters that may change during a run; assign a dict of those to "
+                    "change.");
+}
