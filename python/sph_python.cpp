@@ -6,7 +6,9 @@
 #include <pybind11/stl.h>
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sph/error.hpp"
@@ -135,6 +137,91 @@ void setLiveParameters(sph::Simulation& sim, const py::dict& changes) {
   sim.setLiveParameters(p);
 }
 
+// A FluidArrays used after the simulation stepped past it.
+class StaleView : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The fluid's arrays in place (sph::FluidView), as numpy arrays that share its memory; on the
+// CUDA backend, copies taken from a frame. Every read checks the view is still the
+// simulation's current one: a view kept across a step would read particles that have moved and
+// been reordered.
+class FluidArrays {
+ public:
+  explicit FluidArrays(py::object simulation) : simulation_(std::move(simulation)) {
+    view_ = sim().fluidView();
+    if (!view_) {
+      copy_ = sim().frame(false);
+      copied_ = true;
+      view_.count = copy_.size();
+      view_.step = copy_.step;
+    }
+  }
+  std::size_t count() const {
+    check();
+    return view_.count;
+  }
+  bool copied() const { return copied_; }
+  py::array id(py::handle self) const {
+    check();
+    return copied_ ? flat(copy_.id.data(), self) : flat(view_.id, self);
+  }
+  py::array position(py::handle self) const {
+    check();
+    return copied_ ? vectors(copy_.position.data(), 3, self)
+                   : vectors(view_.position, sph::FluidView::kVectorStride, self);
+  }
+  py::array velocity(py::handle self) const {
+    check();
+    return copied_ ? vectors(copy_.velocity.data(), 3, self)
+                   : vectors(view_.velocity, sph::FluidView::kVectorStride, self);
+  }
+  py::array density(py::handle self) const {
+    check();
+    return flat(copied_ ? copy_.density.data() : view_.density, self);
+  }
+  py::array pressure(py::handle self) const {
+    check();
+    return flat(copied_ ? copy_.pressure.data() : view_.pressure, self);
+  }
+
+ private:
+  const sph::Simulation& sim() const { return simulation_.cast<const sph::Simulation&>(); }
+
+  void check() const {
+    if (copied_) return;
+    const sph::FluidView now = sim().fluidView();
+    if (now.step != view_.step || now.id != view_.id || now.count != view_.count ||
+        now.position != view_.position)
+      throw StaleView("this view of the fluid was taken at step " + std::to_string(view_.step) +
+                      " and the simulation is at step " + std::to_string(now.step) +
+                      ": its arrays have moved on; take a new one with Simulation.view(), or "
+                      "keep copies (numpy.copy) of what you need before stepping");
+  }
+  // Read-only: the arrays are the simulation's own.
+  template <class T>
+  py::array readOnly(py::array_t<T> a) const {
+    a.attr("setflags")(py::arg("write") = false);
+    return std::move(a);
+  }
+  template <class T>
+  py::array flat(const T* data, py::handle self) const {
+    return readOnly(
+        py::array_t<T>({py::ssize_t(view_.count)}, {py::ssize_t(sizeof(T))}, data, self));
+  }
+  py::array vectors(const float* data, std::size_t stride, py::handle self) const {
+    return readOnly(py::array_t<float>(
+        {py::ssize_t(view_.count), py::ssize_t(3)},
+        {py::ssize_t(stride * sizeof(float)), py::ssize_t(sizeof(float))}, data, self));
+  }
+
+  py::object simulation_;
+  sph::FluidView view_;
+  sph::ParticleFrame copy_;
+  bool copied_ = false;
+};
+
 sph::Backend backendNamed(const std::string& name) {
   if (name == "cpu") return sph::Backend::Cpu;
   if (name == "cuda") return sph::Backend::Cuda;
@@ -149,6 +236,28 @@ PYBIND11_MODULE(_sph, m) {
   py::register_exception<sph::InputError>(m, "SceneError", PyExc_ValueError);
   py::register_exception<sph::SimulationFailure>(m, "SimulationFailure", PyExc_RuntimeError);
   py::register_exception<sph::OutputError>(m, "OutputError", PyExc_OSError);
+  py::register_exception<StaleView>(m, "StaleViewError", PyExc_RuntimeError);
+
+  py::class_<FluidArrays>(m, "FluidArrays",
+                          "The fluid's arrays without copying (CPU backend), in the engine's "
+                          "order: `id` says whose each row is. Valid until the simulation steps; "
+                          "reading one after raises StaleViewError. On the CUDA backend, copies "
+                          "ordered by id (`copied` is True).")
+      .def_property_readonly("count", &FluidArrays::count)
+      .def_property_readonly("copied", &FluidArrays::copied)
+      .def_property_readonly(
+          "id", [](py::object self) { return self.cast<const FluidArrays&>().id(self); })
+      .def_property_readonly(
+          "position",
+          [](py::object self) { return self.cast<const FluidArrays&>().position(self); })
+      .def_property_readonly(
+          "velocity",
+          [](py::object self) { return self.cast<const FluidArrays&>().velocity(self); })
+      .def_property_readonly(
+          "density", [](py::object self) { return self.cast<const FluidArrays&>().density(self); })
+      .def_property_readonly("pressure", [](py::object self) {
+        return self.cast<const FluidArrays&>().pressure(self);
+      });
 
   py::class_<sph::Scene>(m, "Scene", "A checked scene: read with load_scene or scene_from_dict.")
       .def_property_readonly("source", [](const sph::Scene& s) { return s.sourcePath; })
@@ -195,6 +304,9 @@ PYBIND11_MODULE(_sph, m) {
            "Copies of the particles' arrays, ordered by id: id, position (n, 3), velocity "
            "(n, 3), density (kg/m³), pressure (Pa), kind (0 fluid, 1 wall, 2 object), "
            "object (-1 if none), surface (1 on the free surface).")
+      .def(
+          "view", [](py::object self) { return FluidArrays(self); },
+          "The fluid's arrays without copying (see FluidArrays).")
       .def_property("live_parameters", &liveParameters, &setLiveParameters,
                     "The parameters that may change during a run; assign a dict of those to "
                     "change.");

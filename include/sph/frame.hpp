@@ -28,4 +28,21 @@ struct ParticleFrame {
   std::size_t size() const { return id.size(); }
 };
 
+// The fluid's arrays where the CPU backend keeps them, read in place: in the engine's own
+// order (by grid cell, which changes every step; `id` says whose each row is), not by id.
+// Valid until the simulation next steps, loads a state or is destroyed. Empty (count 0, null
+// pointers) on the CUDA backend, whose particles live on the GPU: use a ParticleFrame.
+struct FluidView {
+  std::size_t count = 0;
+  std::uint64_t step = 0;  // the step the simulation had taken when it was read
+  const std::uint32_t* id = nullptr;
+  // Particle k's x, y, z at position[kVectorStride * k + 0..2]; the same for velocity.
+  static constexpr std::size_t kVectorStride = 4;
+  const float* position = nullptr;  // m
+  const float* velocity = nullptr;  // m/s
+  const float* density = nullptr;   // kg/m³
+  const float* pressure = nullptr;  // Pa
+  explicit operator bool() const { return id != nullptr; }
+};
+
 }  // namespace sph

@@ -224,6 +224,8 @@ class Simulation {
   FrameCapture capture() const;
   // The particles ordered by id: fluid first, then walls if asked.
   ParticleFrame frame(bool includeBoundary = true) const;
+  // The fluid's arrays read in place, without a copy (CPU backend; see FluidView).
+  FluidView fluidView() const;
   // The static wall particles alone (they never move: runs write them once).
   ParticleFrame boundaryFrame() const;
   // The walls (if asked) and the objects, without the fluid: what a renderer draws beside a

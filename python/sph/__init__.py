@@ -5,6 +5,7 @@
     sim = sph.Simulation(scene, threads=2)
     sim.run(0.5, callback=lambda s: print(s.time, s.stats()["max_speed"]), every=0.1)
     p = sim.particles()          # numpy arrays, copies: p["position"] is (n, 3)
+    v = sim.view()               # the fluid's arrays in place, until the next step
 
 Keys are the scene file's (the README's scene reference), changed with the same dotted paths
 as `sph run --set`. A bad scene raises sph.SceneError (a ValueError) whose message names the
@@ -13,11 +14,12 @@ file, the key and what was expected.
 
 import json
 
-from ._sph import OutputError, Scene, SceneError, Simulation, SimulationFailure
+from ._sph import (FluidArrays, OutputError, Scene, SceneError, Simulation, SimulationFailure,
+                   StaleViewError)
 from ._sph import _load_scene, _parse_scene
 
-__all__ = ["load_scene", "scene_from_dict", "Scene", "Simulation", "SceneError",
-           "SimulationFailure", "OutputError"]
+__all__ = ["load_scene", "scene_from_dict", "Scene", "Simulation", "FluidArrays", "SceneError",
+           "SimulationFailure", "OutputError", "StaleViewError"]
 
 
 def _overrides(changes):

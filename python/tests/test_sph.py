@@ -81,6 +81,33 @@ def test_particles_are_copies_ordered_by_id():
     assert np.count_nonzero(walls["kind"] == 1) == sim.calibration["boundary_particles"]
 
 
+def test_a_view_reads_the_simulation_in_place_and_refuses_after_a_step():
+    sim = sph.Simulation(sph.scene_from_dict(resting_tank(0.02)), threads=1)
+    sim.step()
+    view = sim.view()
+    assert not view.copied
+    position = view.position
+    assert position.shape == (view.count, 3)
+    assert np.shares_memory(position, view.position)  # both the simulation's own memory
+    assert not position.flags.writeable
+    # The engine's order, not the ids': the same particles as a frame once sorted by id.
+    frame = sim.particles()
+    order = np.argsort(view.id)
+    np.testing.assert_array_equal(view.id[order], frame["id"])
+    np.testing.assert_array_equal(view.position[order], frame["position"])
+    np.testing.assert_array_equal(view.velocity[order], frame["velocity"])
+    np.testing.assert_array_equal(view.density[order], frame["density"])
+    np.testing.assert_array_equal(view.pressure[order], frame["pressure"])
+    before = position.copy()
+    sim.step()
+    assert not np.array_equal(position, before)  # an array kept sees the simulation move on
+    with pytest.raises(sph.StaleViewError, match="take a new one"):
+        view.position
+    with pytest.raises(sph.StaleViewError):
+        view.count
+    assert sim.view().count == len(frame["id"])
+
+
 def test_live_parameters_change_the_run():
     sim = sph.Simulation(sph.scene_from_dict(resting_tank(0.02)), threads=1)
     assert sim.live_parameters["gravity"] == pytest.approx([0, -9.81, 0])

@@ -13,6 +13,7 @@ namespace sph::backend {
 
 struct CpuBackend {
   static constexpr const char* kName = "cpu";
+  static constexpr bool kHostMemory = true;  // its buffers are host memory, read in place
   static constexpr bool kBatches = true;  // the passes take neighbours a SIMD batch at a time
   template <class T>
   using Buffer = backend::Buffer<T>;

@@ -204,6 +204,19 @@ class EngineImpl final : public FluidEngine {
     return beginParticleDownload(fluid_, staging_);
   }
 
+  FluidView hostView() const override {
+    FluidView v;
+    if constexpr (B::kHostMemory) {
+      static_assert(sizeof(Vec4) == FluidView::kVectorStride * sizeof(float));
+      v.count = fluid_.count;
+      v.id = fluid_.id.data();
+      v.position = reinterpret_cast<const float*>(fluid_.position.data());
+      v.velocity = reinterpret_cast<const float*>(fluid_.velocity.data());
+      v.density = fluid_.density.data();
+      v.pressure = fluid_.pressure.data();
+    }
+    return v;
+  }
   HostWalls downloadWalls() const override {
     HostWalls w;
     w.id.resize(boundary_.count);

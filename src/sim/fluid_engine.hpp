@@ -15,6 +15,7 @@
 #include "sph/core/probe.hpp"
 #include "sph/core/vec.hpp"
 #include "sph/fluid_draw.hpp"
+#include "sph/frame.hpp"
 #include "sph/object_exchange.hpp"
 
 namespace sph::sim {
@@ -126,6 +127,8 @@ class FluidEngine {
   // them to pinned host memory while the next steps run; the CPU copies at once.
   virtual std::unique_ptr<PendingParticles> beginDownload() const = 0;
   virtual HostWalls downloadWalls() const = 0;
+  // The fluid's arrays in place where they are host memory; empty otherwise.
+  virtual FluidView hostView() const = 0;
   // The fluid's state between steps, and back (the particle counts may differ from now's).
   virtual HostFluidState downloadState() const = 0;
   virtual void uploadState(const HostFluidState& state) = 0;

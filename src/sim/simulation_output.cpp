@@ -278,6 +278,12 @@ ParticleFrame Simulation::frame(bool includeBoundary) const {
   return std::move(b.out);
 }
 
+FluidView Simulation::fluidView() const {
+  FluidView v = impl_->engine->hostView();
+  v.step = impl_->steps;
+  return v;
+}
+
 ParticleFrame Simulation::solidFrame(bool includeBoundary) const {
   const Impl& s = *impl_;
   FrameBuilder b;

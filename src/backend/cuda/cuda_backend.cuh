@@ -12,6 +12,7 @@ namespace sph::backend {
 
 struct CudaBackend {
   static constexpr const char* kName = "cuda";
+  static constexpr bool kHostMemory = false;
   static constexpr bool kBatches = false;  // one thread per particle instead
   template <class T>
   using Buffer = cuda::DeviceBuffer<T>;
