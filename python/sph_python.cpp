@@ -6,12 +6,16 @@
 #include <pybind11/stl.h>
 
 #include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "sph/error.hpp"
+#include "sph/object_exchange.hpp"
 #include "sph/scene_file.hpp"
 #include "sph/simulation.hpp"
 
@@ -222,6 +226,70 @@ class FluidArrays {
   bool copied_ = false;
 };
 
+using FloatArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
+
+// `array` as n rows of 3 (or of 1 when `columns` is 1); refuses another shape naming `name`.
+const float* rowsOf(const FloatArray& array, std::size_t n, int columns, const char* name) {
+  const bool ok = columns == 1 ? array.ndim() == 1 && std::size_t(array.shape(0)) == n
+                               : array.ndim() == 2 && std::size_t(array.shape(0)) == n &&
+                                     array.shape(1) == columns;
+  if (!ok)
+    throw py::value_error(std::string("ObjectExchange.publish: ") + name + ": expected shape (" +
+                          std::to_string(n) + (columns == 1 ? ",)" : ", 3)") + ", got " +
+                          py::cast<std::string>(py::str(array.attr("shape"))));
+  return array.data();
+}
+
+// The engine's side of the exchange from Python: the surface particles of every object, as
+// arrays of one row a particle; forces come back by handle (the row, unless `handle` says).
+void publish(
+    sph::ObjectExchange& exchange, const FloatArray& position, const FloatArray& velocity,
+    const FloatArray& normal, const FloatArray& radius,
+    const py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>& object,
+    const std::optional<py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>>&
+        handle,
+    const std::optional<py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>>& cut,
+    double time) {
+  if (position.ndim() != 2 || position.shape(1) != 3)
+    throw py::value_error("ObjectExchange.publish: position: expected shape (n, 3)");
+  const std::size_t n = std::size_t(position.shape(0));
+  const float* x = rowsOf(position, n, 3, "position");
+  const float* v = rowsOf(velocity, n, 3, "velocity");
+  const float* nrm = rowsOf(normal, n, 3, "normal");
+  const float* r = rowsOf(radius, n, 1, "radius");
+  const auto sizeOk = [&](py::ssize_t ndim, py::ssize_t rows, const char* name) {
+    if (ndim != 1 || std::size_t(rows) != n)
+      throw py::value_error(std::string("ObjectExchange.publish: ") + name + ": expected shape (" +
+                            std::to_string(n) + ",)");
+  };
+  sizeOk(object.ndim(), object.shape(0), "object");
+  if (handle) sizeOk(handle->ndim(), handle->shape(0), "handle");
+  if (cut) sizeOk(cut->ndim(), cut->shape(0), "cut");
+  sph::ObjectSurface& s = exchange.back();
+  s.clear();
+  for (std::size_t k = 0; k < n; ++k)
+    s.add(sph::Vec3{x[3 * k], x[3 * k + 1], x[3 * k + 2]},
+          sph::Vec3{v[3 * k], v[3 * k + 1], v[3 * k + 2]}, r[k],
+          sph::Vec3{nrm[3 * k], nrm[3 * k + 1], nrm[3 * k + 2]},
+          handle ? handle->data()[k] : std::uint32_t(k), object.data()[k],
+          cut && cut->data()[k] != 0);
+  s.time = time;
+  exchange.publish();
+}
+
+py::tuple takeForces(sph::ObjectExchange& exchange) {
+  std::vector<sph::Vec3> force;
+  const double span = exchange.takeForces(force);
+  py::array_t<float> out({py::ssize_t(force.size()), py::ssize_t(3)});
+  float* f = out.mutable_data();
+  for (std::size_t k = 0; k < force.size(); ++k) {
+    f[3 * k] = force[k].x;
+    f[3 * k + 1] = force[k].y;
+    f[3 * k + 2] = force[k].z;
+  }
+  return py::make_tuple(out, span);
+}
+
 sph::Backend backendNamed(const std::string& name) {
   if (name == "cpu") return sph::Backend::Cpu;
   if (name == "cuda") return sph::Backend::Cuda;
@@ -272,6 +340,24 @@ PYBIND11_MODULE(_sph, m) {
       py::arg("path"), py::arg("overrides"));
   m.def("_parse_scene", &sph::parseScene, py::arg("text"), py::arg("source"), py::arg("overrides"));
 
+  py::class_<sph::ObjectExchange, std::shared_ptr<sph::ObjectExchange>>(
+      m, "ObjectExchange",
+      "Objects of your own engine beside the fluid: publish their surface particles, take the "
+      "fluid's forces on them (Simulation.attach_object_engine).")
+      .def(py::init<std::size_t>(), py::arg("handle_count"),
+           "Forces come back for handles 0 to handle_count - 1.")
+      .def_property_readonly("handle_count", &sph::ObjectExchange::handleCount)
+      .def("publish", &publish, py::arg("position"), py::arg("velocity"), py::arg("normal"),
+           py::arg("radius"), py::arg("object"), py::arg("handle") = py::none(),
+           py::arg("cut") = py::none(), py::arg("time") = 0.0,
+           "The objects' surface particles for the fluid's next step: position, velocity and "
+           "outward normal (n, 3), radius (n,) in m, object id (n,) from 0; handle (n,): the "
+           "row each force comes back in (default: the particle's own row); cut (n,): 1 where "
+           "the object is torn.")
+      .def("take_forces", &takeForces,
+           "(force, span): the mean force of the fluid on each handle, (handle_count, 3) in N, "
+           "over the fluid steps since the last call, and the time they span in s.");
+
   py::class_<sph::Simulation>(m, "Simulation")
       .def(py::init([](const sph::Scene& scene, const std::string& backend, int threads) {
              sph::SimulationOptions options;
@@ -283,8 +369,21 @@ PYBIND11_MODULE(_sph, m) {
            "A simulation of `scene` on `backend` (\"cpu\", \"cuda\" or \"auto\"); threads 0: "
            "every hardware thread. Results do not depend on the thread count.")
       .def(
-          "step", [](sph::Simulation& s) { s.step(); }, py::call_guard<py::gil_scoped_release>(),
-          "One time step.")
+          "step", [](sph::Simulation& s, double until) { s.step(until); },
+          py::arg("until") = std::numeric_limits<double>::infinity(),
+          py::call_guard<py::gil_scoped_release>(),
+          "One time step, shortened so as not to pass `until`.")
+      .def("attach_object_engine", &sph::Simulation::attachObjectEngine, py::arg("exchange"),
+           "Couples the objects an ObjectExchange publishes to the fluid (once, before the "
+           "first step).")
+      .def(
+          "objects",
+          [](const sph::Simulation& s) {
+            py::list out;
+            for (const sph::ObjectStats& o : s.objectStats()) out.append(objectStats(o));
+            return out;
+          },
+          "Each object's mass, centre, velocity and the fluid's force on it (N).")
       .def("advance_to", &sph::Simulation::advanceTo, py::arg("time"),
            py::call_guard<py::gil_scoped_release>(),
            "Steps until the simulated time reaches `time` (the last step is shortened to land "

@@ -14,11 +14,12 @@ file, the key and what was expected.
 
 import json
 
-from ._sph import (FluidArrays, OutputError, Scene, SceneError, Simulation, SimulationFailure,
-                   StaleViewError)
+from ._sph import (FluidArrays, ObjectExchange, OutputError, Scene, SceneError, Simulation,
+                   SimulationFailure, StaleViewError)
 from ._sph import _load_scene, _parse_scene
 
-__all__ = ["load_scene", "scene_from_dict", "Scene", "Simulation", "FluidArrays", "SceneError",
+__all__ = ["load_scene", "scene_from_dict", "Scene", "Simulation", "FluidArrays", "ObjectExchange",
+           "SceneError",
            "SimulationFailure", "OutputError", "StaleViewError"]
 
 
