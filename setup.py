@@ -39,4 +39,6 @@ class CMakeBuild(build_ext):
         self.copy_file(str(built[0]), str(target))
 
 
-setup(ext_modules=[Extension("sph._sph", sources=[])], cmdclass={"build_ext": CMakeBuild})
+# setuptools keeps its own files apart from the CMake build folders.
+setup(ext_modules=[Extension("sph._sph", sources=[])], cmdclass={"build_ext": CMakeBuild},
+      options={"build": {"build_base": str(ROOT / "build-python" / "setuptools")}})

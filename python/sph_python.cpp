@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "io/frame_reader.hpp"
+#include "io/frame_writer.hpp"
 #include "sph/error.hpp"
 #include "sph/object_exchange.hpp"
 #include "sph/scene_file.hpp"
@@ -33,12 +35,7 @@ py::array_t<T> toArray(const std::vector<T>& values, std::size_t rows, std::size
   return out;
 }
 
-py::dict particles(const sph::Simulation& sim, bool includeBoundary) {
-  sph::ParticleFrame f;
-  {
-    py::gil_scoped_release release;
-    f = sim.frame(includeBoundary);
-  }
+py::dict frameArrays(const sph::ParticleFrame& f) {
   const std::size_t n = f.size();
   py::dict out;
   out["id"] = toArray(f.id, n, 1);
@@ -50,6 +47,36 @@ py::dict particles(const sph::Simulation& sim, bool includeBoundary) {
   out["object"] = toArray(f.object, n, 1);
   out["surface"] = toArray(f.surface, n, 1);
   return out;
+}
+
+py::dict particles(const sph::Simulation& sim, bool includeBoundary) {
+  sph::ParticleFrame f;
+  {
+    py::gil_scoped_release release;
+    f = sim.frame(includeBoundary);
+  }
+  return frameArrays(f);
+}
+
+sph::FrameFormat formatNamed(const std::string& name) {
+  if (name == "vtp") return sph::FrameFormat::Vtp;
+  if (name == "ply") return sph::FrameFormat::Ply;
+  if (name == "csv") return sph::FrameFormat::Csv;
+  throw py::value_error("format: expected \"vtp\", \"ply\" or \"csv\", got \"" + name + "\"");
+}
+
+// A str or an os.PathLike as a path.
+std::string pathOf(const py::object& path) {
+  return py::cast<std::string>(py::module_::import("os").attr("fspath")(path));
+}
+
+// The frame as `sph run` writes it (output.format), to `path` as given.
+void writeFrame(const sph::Simulation& sim, const py::object& pathLike, const std::string& format,
+                bool includeBoundary) {
+  const sph::FrameFormat f = formatNamed(format);
+  const std::string path = pathOf(pathLike);
+  py::gil_scoped_release release;
+  sph::io::writeFrame(sim.frame(includeBoundary), f, path);
 }
 
 py::dict calibration(const sph::Simulation& sim) {
@@ -333,6 +360,22 @@ PYBIND11_MODULE(_sph, m) {
            "Every key of the scene, defaults included, as JSON text.");
 
   m.def(
+      "read_frame",
+      [](const py::object& pathLike) {
+        const std::string path = pathOf(pathLike);
+        sph::ParticleFrame f;
+        {
+          py::gil_scoped_release release;
+          f = sph::io::readFrame(path);
+        }
+        py::dict out = frameArrays(f);
+        out["time"] = f.time;
+        return out;
+      },
+      py::arg("path"),
+      "A frame file (.vtp, .ply, .csv, as sph run writes them) as a dict of numpy arrays, "
+      "with its time.");
+  m.def(
       "_load_scene",
       [](const std::string& path, const std::vector<std::string>& overrides) {
         return sph::loadScene(path, overrides);
@@ -398,6 +441,10 @@ PYBIND11_MODULE(_sph, m) {
       .def_property_readonly(
           "calibration", &calibration,
           "The values derived from the scene (spacing, mass, speed of sound...).")
+      .def("write_frame", &writeFrame, py::arg("path"), py::arg("format") = "vtp",
+           py::arg("include_boundary") = true,
+           "Writes the particles as sph run writes a frame (\"vtp\", \"ply\" or \"csv\"), "
+           "atomically: a reader never sees half a file.")
       .def("stats", &stats, "The statistics of one row of stats.csv, with the objects'.")
       .def("particles", &particles, py::arg("include_boundary") = false,
            "Copies of the particles' arrays, ordered by id: id, position (n, 3), velocity "

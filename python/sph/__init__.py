@@ -16,10 +16,10 @@ import json
 
 from ._sph import (FluidArrays, ObjectExchange, OutputError, Scene, SceneError, Simulation,
                    SimulationFailure, StaleViewError)
-from ._sph import _load_scene, _parse_scene
+from ._sph import _load_scene, _parse_scene, read_frame
 
 __all__ = ["load_scene", "scene_from_dict", "Scene", "Simulation", "FluidArrays", "ObjectExchange",
-           "SceneError",
+           "SceneError", "read_frame",
            "SimulationFailure", "OutputError", "StaleViewError"]
 
 
