@@ -1,0 +1,65 @@
+// A Bullet world (Coumans, Bullet Physics SDK) as the fluid's object engine: its rigid bodies
+// sampled into surface particles and coupled to the fluid through an ObjectExchange
+// (sph/object_exchange.hpp), the fluid's forces applied to them at every Bullet substep.
+// Built where Bullet is (libbullet-dev; the CMake target sph::bullet). Bullet stays behind this
+// header: its own headers and precision are not the caller's concern.
+//
+//   sph::BulletEngine engine({spacing, gravity});
+//   engine.addBox({0.07, 0.04, 0.05}, {0.1, 0.2, 0.08}, 500.0);
+//   sim.attachObjectEngine(engine.exchange());       // publishes the bodies
+//   while (...) { sim.step(); engine.step(); }      // or engine.step() in a thread of its own
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <memory>
+
+#include "sph/object_exchange.hpp"
+
+namespace sph {
+
+class BulletEngine {
+ public:
+  using Vec3d = std::array<double, 3>;
+  struct Settings {
+    double spacing = 0.01;  // of the surface particles, m: the fluid's spacing
+    Vec3d gravity{0.0, -9.81, 0.0};
+    double longestSubstep = 1e-3;  // s: a step of the fluid's is cut into Bullet substeps
+  };
+  explicit BulletEngine(const Settings& settings);
+  ~BulletEngine();
+  BulletEngine(const BulletEngine&) = delete;
+  BulletEngine& operator=(const BulletEngine&) = delete;
+
+  // A free rigid body of `density` (kg/m³) centred at `centre` (m), at rest; returns its object
+  // id (0, 1, ... in the order added). Its surface particles lie on a lattice of `spacing`, half
+  // a spacing inside its faces, as the fluid's particles fill their cells.
+  int addBox(const Vec3d& halfExtents, const Vec3d& centre, double density);
+  int addSphere(double radius, const Vec3d& centre, double density);
+  // A fixed box the bodies collide with (a tank's floor and walls); the fluid does not see it.
+  void addStaticBox(const Vec3d& halfExtents, const Vec3d& centre);
+
+  // The exchange, made and published at the first call: add every body before it.
+  std::shared_ptr<ObjectExchange> exchange();
+  // Takes the fluid's mean forces since the last step, applies them (and their torques) at
+  // every substep while Bullet advances the world over the time they span, and publishes the
+  // bodies where they now are. Does nothing while the fluid has not stepped.
+  void step();
+
+  struct Body {
+    Vec3d centre{0, 0, 0};    // m
+    Vec3d velocity{0, 0, 0};  // m/s
+    Vec3d spin{0, 0, 0};      // rad/s
+    double mass = 0.0;        // kg
+    std::size_t particles = 0;
+  };
+  Body body(int id) const;
+  std::size_t bodyCount() const;
+  double time() const;  // s of the world
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sph

@@ -1,0 +1,177 @@
+// Bullet's rigid bodies beside the fluid (sph/bullet_engine.hpp): Newton's third law through the
+// exchange, a light box afloat at Archimedes' draft, a granite ball on the floor.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <utility>
+
+#include "sph/bullet_engine.hpp"
+#include "sph/simulation.hpp"
+
+namespace sph {
+namespace {
+
+constexpr double kSpacing = 0.01;
+
+#ifdef SPH_TESTS_SANITIZED
+constexpr bool kSanitized = true;  // 10 to 60 times slower: short runs that must run clean
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// A tank of water 0.14 m deep, with room above it.
+Scene tank() {
+  Scene s;
+  s.name = "bullet_tank";
+  s.sourcePath = "bullet_tank (test)";
+  s.fluid.spacing = kSpacing;
+  s.fluid.viscosity = 0.05;
+  s.domain.box = {{-0.05, -0.05, -0.05}, {0.35, 0.45, 0.21}};
+  FluidBlock water;
+  water.box = {{0, 0, 0}, {0.3, 0.14, 0.16}};
+  water.hydrostatic = true;
+  s.fluid.blocks.push_back(water);
+  s.walls.push_back(WallDesc::tank({{0, 0, 0}, {0.3, 0.3, 0.16}}, 2, false));
+  s.calibration.maxExpectedSpeed = 1.5;
+  s.output.format = FrameFormat::None;
+  return s;
+}
+
+// Away from the bodies (x > 0.2): the top particle of each lattice column, averaged, plus half a
+// spacing.
+double waterLevel(const ParticleFrame& f) {
+  std::map<std::pair<int, int>, double> top;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const double x = f.position[3 * i], y = f.position[3 * i + 1], z = f.position[3 * i + 2];
+    if (x < 0.2) continue;
+    const auto key = std::make_pair(int(std::floor(x / kSpacing)), int(std::floor(z / kSpacing)));
+    const auto it = top.find(key);
+    if (it == top.end() || y > it->second) top[key] = y;
+  }
+  double sum = 0.0;
+  for (const auto& column : top) sum += column.second;
+  return sum / double(top.size()) + 0.5 * kSpacing;
+}
+
+BulletEngine::Settings settings(const Scene& scene) {
+  BulletEngine::Settings s;
+  s.spacing = scene.fluid.spacing;
+  s.gravity = scene.gravity;
+  return s;
+}
+
+// Fluid + Bullet body, gravity off: a block of water thrown at a box; what the fluid loses the
+// box gains.
+TEST(BulletEngine, FluidAndBulletBodyConserveMomentum) {
+  Scene scene;
+  scene.name = "block_hits_bullet_box";
+  scene.sourcePath = "block_hits_bullet_box (test)";
+  scene.gravity = {0, 0, 0};
+  scene.fluid.spacing = kSpacing;
+  scene.fluid.viscosity = 0.1;
+  scene.domain.box = {{-1, -1, -1}, {1, 1, 1}};
+  FluidBlock block;
+  block.box = {{-0.1, -0.05, -0.05}, {0.0, 0.05, 0.05}};
+  block.velocity = {1.0, 0.1, 0.0};
+  scene.fluid.blocks.push_back(block);
+  Simulation sim(scene);
+  BulletEngine engine(settings(scene));
+  engine.addBox({0.03, 0.04, 0.03}, {0.06, 0.01, 0.0}, 800.0);
+  sim.attachObjectEngine(engine.exchange());
+  const auto momentum = [&] {
+    std::array<double, 4> out{0, 0, 0, 0};  // x, y, z and Σ m|v| of the fluid
+    const ParticleFrame f = sim.frame(false);
+    const double m = sim.calibration().mass;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      double v2 = 0.0;
+      for (int a = 0; a < 3; ++a) {
+        out[a] += m * f.velocity[3 * i + a];
+        v2 += double(f.velocity[3 * i + a]) * f.velocity[3 * i + a];
+      }
+      out[3] += m * std::sqrt(v2);
+    }
+    return out;
+  };
+  const std::array<double, 4> before = momentum();
+  while (sim.time() < (kSanitized ? 0.03 : 0.15)) {
+    sim.step();
+    engine.step();
+  }
+  const std::array<double, 4> after = momentum();
+  const BulletEngine::Body box = engine.body(0);
+  EXPECT_GT(box.velocity[0], kSanitized ? 0.0 : 0.05) << "the fluid did not push the box";
+  for (int a = 0; a < 3; ++a)
+    EXPECT_NEAR(after[a] + box.mass * box.velocity[a], before[a], 1e-5 * before[3]) << "axis " << a;
+}
+
+TEST(BulletEngine, ABoxOfHalfTheWatersDensityFloatsAtItsArchimedesDraft) {
+  const Scene scene = tank();
+  Simulation sim(scene);
+  BulletEngine engine(settings(scene));
+  const BulletEngine::Vec3d half{0.07, 0.04, 0.05};
+  engine.addBox(half, {0.1, 0.14 + 0.02 + half[1], 0.08}, 500.0);  // 2 cm above the water
+  sim.attachObjectEngine(engine.exchange());
+  const double duration = kSanitized ? 0.05 : 1.5;
+  double draftSum = 0.0;
+  int samples = 0;
+  double next = 1.2;
+  while (sim.time() < duration) {
+    sim.step(duration);
+    engine.step();
+    if (sim.time() + 1e-9 < next) continue;
+    draftSum += waterLevel(sim.frame(false)) - (engine.body(0).centre[1] - half[1]);
+    ++samples;
+    next += 0.05;
+  }
+  if (kSanitized) GTEST_SKIP() << "too short under the sanitizers to settle; it ran clean";
+  const double archimedes = 2.0 * half[1] * 500.0 / 1000.0;
+  ASSERT_GE(samples, 6);
+  std::printf("mean draft over 1.2-1.5 s: %.4f m, Archimedes %.4f m (%+.1f %%)\n",
+              draftSum / samples, archimedes, 100.0 * (draftSum / samples / archimedes - 1.0));
+  EXPECT_NEAR(draftSum / samples, archimedes, 0.10 * archimedes);
+  // Afloat, upright: the water's torques balance.
+  const BulletEngine::Body box = engine.body(0);
+  for (double w : box.spin) EXPECT_LT(std::abs(w), 0.5);
+}
+
+TEST(BulletEngine, AGraniteBallRestsOnTheFloor) {
+  const Scene scene = tank();
+  Simulation sim(scene);
+  BulletEngine engine(settings(scene));
+  const double r = 0.03;
+  engine.addSphere(r, {0.15, 0.2, 0.08}, 2700.0);
+  engine.addStaticBox({1.0, 0.5, 1.0}, {0.15, -0.5, 0.08});  // the tank's floor, for Bullet
+  sim.attachObjectEngine(engine.exchange());
+  const double duration = kSanitized ? 0.05 : 1.0;
+  while (sim.time() < duration) {
+    sim.step(duration);
+    engine.step();
+  }
+  if (kSanitized) GTEST_SKIP() << "too short under the sanitizers to sink; it ran clean";
+  const BulletEngine::Body ball = engine.body(0);
+  std::printf("ball at 1 s: centre %.4f m above the floor (radius %.3f), speed %.2e m/s\n",
+              ball.centre[1], r, std::hypot(ball.velocity[0], ball.velocity[1], ball.velocity[2]));
+  EXPECT_NEAR(ball.centre[1], r, 0.1 * r) << "on the floor";
+  EXPECT_LT(std::hypot(ball.velocity[0], ball.velocity[1], ball.velocity[2]), 0.02) << "at rest";
+  EXPECT_EQ(sim.fluidCount(), sim.calibration().fluidParticles);
+}
+
+TEST(BulletEngine, MisuseIsRefused) {
+  BulletEngine engine({});
+  EXPECT_THROW(engine.exchange(), std::logic_error);  // nothing to exchange
+  EXPECT_THROW(engine.step(), std::logic_error);
+  EXPECT_THROW(engine.addBox({0.1, 0.1, 0.1}, {0, 0, 0}, 0.0), std::invalid_argument);
+  engine.addSphere(0.05, {0, 0, 0}, 1000.0);
+  EXPECT_GT(engine.exchange()->handleCount(), 0u);
+  EXPECT_THROW(engine.addSphere(0.05, {0, 0, 0}, 1000.0), std::logic_error);
+  EXPECT_THROW(engine.body(1), std::out_of_range);
+  EXPECT_THROW(BulletEngine({0.0}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sph
