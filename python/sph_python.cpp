@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -16,6 +17,7 @@
 
 #include "io/frame_reader.hpp"
 #include "io/frame_writer.hpp"
+#include "sph/box_drop_scene.hpp"
 #include "sph/error.hpp"
 #include "sph/object_exchange.hpp"
 #include "sph/scene_file.hpp"
@@ -359,6 +361,8 @@ PYBIND11_MODULE(_sph, m) {
       .def("to_json", &sph::sceneToJsonText,
            "Every key of the scene, defaults included, as JSON text.");
 
+  m.def("box_drop_scene", &sph::boxDropScene, py::arg("particles"),
+        "The benchmark scene of sph bench: about `particles` fluid particles dropped in a box.");
   m.def(
       "read_frame",
       [](const py::object& pathLike) {
@@ -445,6 +449,23 @@ PYBIND11_MODULE(_sph, m) {
            py::arg("include_boundary") = true,
            "Writes the particles as sph run writes a frame (\"vtp\", \"ply\" or \"csv\"), "
            "atomically: a reader never sees half a file.")
+      .def(
+          "_timed_steps",
+          [](sph::Simulation& s, int steps) {
+            std::vector<double> ms;
+            py::gil_scoped_release release;
+            for (int k = 0; k < steps; ++k) {
+              const auto start = std::chrono::steady_clock::now();
+              s.step();
+              ms.push_back(std::chrono::duration<double, std::milli>(
+                               std::chrono::steady_clock::now() - start)
+                               .count());
+            }
+            return ms;
+          },
+          py::arg("steps"),
+          "Steps `steps` times from C++, timing each (ms): what scripts/bench-python sets "
+          "Python's own step() against.")
       .def("stats", &stats, "The statistics of one row of stats.csv, with the objects'.")
       .def("particles", &particles, py::arg("include_boundary") = false,
            "Copies of the particles' arrays, ordered by id: id, position (n, 3), velocity "

@@ -16,10 +16,10 @@ import json
 
 from ._sph import (FluidArrays, ObjectExchange, OutputError, Scene, SceneError, Simulation,
                    SimulationFailure, StaleViewError)
-from ._sph import _load_scene, _parse_scene, read_frame
+from ._sph import _load_scene, _parse_scene, box_drop_scene, read_frame
 
 __all__ = ["load_scene", "scene_from_dict", "Scene", "Simulation", "FluidArrays", "ObjectExchange",
-           "SceneError", "read_frame",
+           "SceneError", "read_frame", "box_drop_scene",
            "SimulationFailure", "OutputError", "StaleViewError"]
 
 
