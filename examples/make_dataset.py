@@ -43,7 +43,7 @@ def random_scene(rng, spacing):
                                           max(2, round(high / spacing)) + 1))
 
     width, height = spacings(0.1, 0.2), spacings(0.1, 0.2)
-    walls = [{"type": "tank", "min": [0, 0, 0], "max": list(TANK), "layers": 2}]
+    walls = [{"type": "tank", "min": [0, 0, 0], "max": list(TANK), "layers": 2, "closed": True}]
     if rng.random() < 0.5:
         size = spacings(0.04, 0.08)
         x = round(float(rng.uniform(width + 0.1, TANK[0] - size - 0.05)), 4)
@@ -73,7 +73,7 @@ def trajectory(document, duration, every):
         frames.append(p["position"])
     kinds = p["kind"].astype(np.int32)
     if sim.removed_count:
-        raise RuntimeError(f"{sim.removed_count} particles left the tank: lower --duration")
+        raise RuntimeError(f"{sim.removed_count} particles left the closed tank")
     return np.stack(frames).astype(np.float32), kinds, sim.calibration
 
 
