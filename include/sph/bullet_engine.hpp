@@ -1,8 +1,9 @@
 // A Bullet world (Coumans, Bullet Physics SDK) as the fluid's object engine: its rigid bodies
 // sampled into surface particles and coupled to the fluid through an ObjectExchange
 // (sph/object_exchange.hpp), the fluid's forces applied to them at every Bullet substep.
-// Built where Bullet is (libbullet-dev; the CMake target sph::bullet). Bullet stays behind this
-// header: its own headers and precision are not the caller's concern.
+// Shapes: boxes, spheres, capsules and convex hulls. Built where Bullet is (libbullet-dev; the
+// CMake target sph::bullet). Bullet stays behind this header: its own headers and precision are not
+// the caller's concern.
 //
 //   sph::BulletEngine engine({spacing, gravity});
 //   engine.addBox({0.07, 0.04, 0.05}, {0.1, 0.2, 0.08}, 500.0);
@@ -13,6 +14,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <vector>
 
 #include "sph/object_exchange.hpp"
 
@@ -36,6 +38,11 @@ class BulletEngine {
   // a spacing inside its faces, as the fluid's particles fill their cells.
   int addBox(const Vec3d& halfExtents, const Vec3d& centre, double density);
   int addSphere(double radius, const Vec3d& centre, double density);
+  // A capsule along y: a cylinder `length` long between two hemispheres of `radius`.
+  int addCapsule(double radius, double length, const Vec3d& centre, double density);
+  // The convex hull of `vertices` (m, in a frame whose origin is put at `origin`); its centre of
+  // mass is the hull's centroid, its volume exact, its inertia Bullet's (its bounding box's).
+  int addConvexHull(const std::vector<Vec3d>& vertices, const Vec3d& origin, double density);
   // A fixed box the bodies collide with (a tank's floor and walls); the fluid does not see it.
   void addStaticBox(const Vec3d& halfExtents, const Vec3d& centre);
 

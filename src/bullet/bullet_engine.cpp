@@ -1,5 +1,6 @@
 #include "sph/bullet_engine.hpp"
 
+#include <LinearMath/btConvexHullComputer.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
@@ -66,6 +67,110 @@ Sampling sampleSphere(double r, double d) {
         s.normal.push_back(x / btScalar(length));
       }
   return s;
+}
+
+// Lattice points of spacing `d` whose depth under the surface, given as a signed distance with
+// its outward normal (negative inside), lies in [d/2, 3d/2): the outer spacing, half a spacing
+// in, as for a box.
+template <class SignedDistance>
+Sampling sampleBySignedDistance(const btVector3& low, const btVector3& high, double d,
+                                SignedDistance signedDistance) {
+  Sampling s;
+  int n[3];
+  for (int a = 0; a < 3; ++a) n[a] = int(std::ceil((high[a] - low[a]) / d)) + 1;
+  for (int i = 0; i < n[0]; ++i)
+    for (int j = 0; j < n[1]; ++j)
+      for (int k = 0; k < n[2]; ++k) {
+        const btVector3 x(btScalar(low[0] + (i + 0.5) * d), btScalar(low[1] + (j + 0.5) * d),
+                          btScalar(low[2] + (k + 0.5) * d));
+        btVector3 normal;
+        const double depth = -signedDistance(x, normal);
+        if (depth < 0.5 * d || depth >= 1.5 * d) continue;
+        s.offset.push_back(x);
+        s.normal.push_back(normal);
+      }
+  return s;
+}
+
+Sampling sampleCapsule(double r, double length, double d) {
+  const double half = 0.5 * length;
+  const btVector3 corner(btScalar(r), btScalar(r + half), btScalar(r));
+  return sampleBySignedDistance(-corner, corner, d, [&](const btVector3& x, btVector3& normal) {
+    const double y = std::clamp(double(x.y()), -half, half);
+    const btVector3 fromAxis = x - btVector3(0, btScalar(y), 0);
+    const double distance = fromAxis.length();
+    normal = distance > 0 ? fromAxis / btScalar(distance) : btVector3(1, 0, 0);
+    return distance - r;
+  });
+}
+
+// A convex polytope from its vertices: its outward face planes (n, with w the offset: n·x + w
+// is the signed distance), its volume and centroid.
+struct Polytope {
+  btAlignedObjectArray<btVector3> planes;
+  double volume = 0.0;
+  btVector3 centroid{0, 0, 0};
+};
+
+Polytope polytopeOf(const std::vector<BulletEngine::Vec3d>& vertices) {
+  std::vector<btVector3> points;
+  for (const auto& v : vertices) points.push_back(toBt(v));
+  btConvexHullComputer hull;
+  if (points.size() >= 4)
+    hull.compute(&points[0].x(), int(sizeof(btVector3)), int(points.size()), 0, 0);
+  Polytope p;
+  btVector3 inside(0, 0, 0);
+  for (int k = 0; k < hull.vertices.size(); ++k) inside += hull.vertices[k];
+  if (hull.vertices.size() > 0) inside /= btScalar(hull.vertices.size());
+  // Each face, its vertices counter-clockwise seen from outside, fanned into tetrahedra with a
+  // point inside.
+  btVector3 moment(0, 0, 0);
+  for (int f = 0; f < hull.faces.size(); ++f) {
+    std::vector<btVector3> face;
+    const btConvexHullComputer::Edge* start = &hull.edges[hull.faces[f]];
+    const btConvexHullComputer::Edge* e = start;
+    do {
+      face.push_back(hull.vertices[e->getSourceVertex()]);
+      e = e->getNextEdgeOfFace();
+    } while (e != start);
+    btVector3 n(0, 0, 0);
+    for (std::size_t k = 1; k + 1 < face.size() && n.length2() == 0; ++k) {
+      const btVector3 c = (face[k] - face[0]).cross(face[k + 1] - face[0]);
+      if (c.length2() > 0) n = c.normalized();
+    }
+    if (n.length2() == 0) continue;
+    btVector3 plane = n;
+    plane[3] = -n.dot(face[0]);
+    p.planes.push_back(plane);
+    for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+      const btVector3 a = face[0] - inside, b = face[k] - inside, c = face[k + 1] - inside;
+      const double v = double(a.dot(b.cross(c))) / 6.0;
+      p.volume += v;
+      moment += (inside + face[0] + face[k] + face[k + 1]) * btScalar(0.25 * v);
+    }
+  }
+  if (!(p.volume > 0.0) || p.planes.size() < 4)
+    throw std::invalid_argument("BulletEngine: the vertices span no volume");
+  p.centroid = moment / btScalar(p.volume);
+  return p;
+}
+
+Sampling sampleHull(const Polytope& p, const std::vector<BulletEngine::Vec3d>& vertices, double d) {
+  btVector3 low(1e30f, 1e30f, 1e30f), high(-1e30f, -1e30f, -1e30f);
+  for (const auto& v : vertices) {
+    low.setMin(toBt(v) - p.centroid);
+    high.setMax(toBt(v) - p.centroid);
+  }
+  return sampleBySignedDistance(low, high, d, [&](const btVector3& x, btVector3& normal) {
+    double largest = -1e30;
+    for (int f = 0; f < p.planes.size(); ++f) {
+      const btVector3& plane = p.planes[f];
+      const btVector3 n(plane.x(), plane.y(), plane.z());
+      const double distance = double(n.dot(x + p.centroid) + plane[3]);
+      if (distance > largest) largest = distance, normal = n;
+    }
+    return largest;
+  });
 }
 
 }  // namespace
@@ -172,6 +277,25 @@ int BulletEngine::addSphere(double radius, const Vec3d& centre, double density) 
   return impl_->add(std::make_unique<btSphereShape>(btScalar(radius)),
                     sampleSphere(radius, impl_->settings.spacing), centre, density,
                     4.0 / 3.0 * kPi * radius * radius * radius);
+}
+
+int BulletEngine::addCapsule(double radius, double length, const Vec3d& centre, double density) {
+  constexpr double kPi = 3.14159265358979323846;
+  return impl_->add(std::make_unique<btCapsuleShape>(btScalar(radius), btScalar(length)),
+                    sampleCapsule(radius, length, impl_->settings.spacing), centre, density,
+                    kPi * radius * radius * (length + 4.0 / 3.0 * radius));
+}
+
+int BulletEngine::addConvexHull(const std::vector<Vec3d>& vertices, const Vec3d& origin,
+                                double density) {
+  const Polytope p = polytopeOf(vertices);
+  auto shape = std::make_unique<btConvexHullShape>();
+  for (const auto& v : vertices) shape->addPoint(toBt(v) - p.centroid, false);
+  shape->recalcLocalAabb();
+  shape->setMargin(btScalar(1e-3));  // Bullet's 4 cm default would hold it off the floor
+  const btVector3 centre = toBt(origin) + p.centroid;
+  return impl_->add(std::move(shape), sampleHull(p, vertices, impl_->settings.spacing),
+                    fromBt(centre), density, p.volume);
 }
 
 void BulletEngine::addStaticBox(const Vec3d& halfExtents, const Vec3d& centre) {

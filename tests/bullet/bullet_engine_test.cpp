@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "sph/bullet_engine.hpp"
 #include "sph/simulation.hpp"
@@ -65,12 +67,27 @@ BulletEngine::Settings settings(const Scene& scene) {
   return s;
 }
 
-// Fluid + Bullet body, gravity off: a block of water thrown at a box; what the fluid loses the
-// box gains.
-TEST(BulletEngine, FluidAndBulletBodyConserveMomentum) {
+enum class Shape { Box, Sphere, Capsule, Hull };
+
+std::string shapeName(const ::testing::TestParamInfo<Shape>& info) {
+  const char* names[] = {"box", "sphere", "capsule", "hull"};
+  return names[int(info.param)];
+}
+
+// An octahedron 8 cm across, its vertices given about a corner rather than its centre.
+std::vector<BulletEngine::Vec3d> octahedron() {
+  const double a = 0.04;
+  return {{2 * a, a, a}, {0, a, a}, {a, 2 * a, a}, {a, 0, a}, {a, a, 2 * a}, {a, a, 0}};
+}
+
+class BulletShapes : public ::testing::TestWithParam<Shape> {};
+
+// Fluid + Bullet body, gravity off: a block of water thrown at a body of each shape; what the
+// fluid loses the body gains.
+TEST_P(BulletShapes, FluidAndBulletBodyConserveMomentum) {
   Scene scene;
-  scene.name = "block_hits_bullet_box";
-  scene.sourcePath = "block_hits_bullet_box (test)";
+  scene.name = "block_hits_bullet_body";
+  scene.sourcePath = "block_hits_bullet_body (test)";
   scene.gravity = {0, 0, 0};
   scene.fluid.spacing = kSpacing;
   scene.fluid.viscosity = 0.1;
@@ -81,7 +98,21 @@ TEST(BulletEngine, FluidAndBulletBodyConserveMomentum) {
   scene.fluid.blocks.push_back(block);
   Simulation sim(scene);
   BulletEngine engine(settings(scene));
-  engine.addBox({0.03, 0.04, 0.03}, {0.06, 0.01, 0.0}, 800.0);
+  switch (GetParam()) {
+    case Shape::Box:
+      engine.addBox({0.03, 0.04, 0.03}, {0.06, 0.01, 0.0}, 800.0);
+      break;
+    case Shape::Sphere:
+      engine.addSphere(0.04, {0.07, 0.01, 0.0}, 800.0);
+      break;
+    case Shape::Capsule:
+      engine.addCapsule(0.03, 0.04, {0.06, 0.01, 0.0}, 800.0);
+      break;
+    case Shape::Hull:
+      engine.addConvexHull(octahedron(), {0.03, -0.03, -0.04}, 800.0);
+      break;
+  }
+  ASSERT_GT(engine.body(0).particles, 20u);
   sim.attachObjectEngine(engine.exchange());
   const auto momentum = [&] {
     std::array<double, 4> out{0, 0, 0, 0};  // x, y, z and Σ m|v| of the fluid
@@ -103,10 +134,53 @@ TEST(BulletEngine, FluidAndBulletBodyConserveMomentum) {
     engine.step();
   }
   const std::array<double, 4> after = momentum();
-  const BulletEngine::Body box = engine.body(0);
-  EXPECT_GT(box.velocity[0], kSanitized ? 0.0 : 0.05) << "the fluid did not push the box";
+  const BulletEngine::Body body = engine.body(0);
+  EXPECT_GT(body.velocity[0], kSanitized ? 0.0 : 0.02) << "the fluid did not push the body";
   for (int a = 0; a < 3; ++a)
-    EXPECT_NEAR(after[a] + box.mass * box.velocity[a], before[a], 1e-5 * before[3]) << "axis " << a;
+    EXPECT_NEAR(after[a] + body.mass * body.velocity[a], before[a], 1e-5 * before[3])
+        << "axis " << a;
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, BulletShapes,
+                         ::testing::Values(Shape::Box, Shape::Sphere, Shape::Capsule, Shape::Hull),
+                         shapeName);
+
+// Mass from the exact volume, centred on the centroid, particles half a spacing inside.
+TEST(BulletEngine, ShapesHaveTheirVolumesCentresAndSurfaceLayers) {
+  BulletEngine engine({});
+  const double pi = 3.14159265358979323846, a = 0.04;
+  engine.addCapsule(0.03, 0.05, {0, 0, 0}, 1000.0);
+  engine.addConvexHull(octahedron(), {1.0, 2.0, 3.0}, 1000.0);
+  EXPECT_NEAR(engine.body(0).mass, 1000.0 * pi * 0.03 * 0.03 * (0.05 + 0.04), 1e-9);
+  EXPECT_NEAR(engine.body(1).mass, 1000.0 * 4.0 / 3.0 * a * a * a, 1e-9);
+  const BulletEngine::Body hull = engine.body(1);
+  EXPECT_NEAR(hull.centre[0], 1.0 + a, 1e-6);
+  EXPECT_NEAR(hull.centre[1], 2.0 + a, 1e-6);
+  EXPECT_NEAR(hull.centre[2], 3.0 + a, 1e-6);
+  ObjectSurface s;  // the bodies as published
+  std::uint64_t seen = 0;
+  engine.exchange()->readIfNew(seen, [&](const ObjectSurface& published) { s = published; });
+  ASSERT_EQ(s.size(), engine.body(0).particles + hull.particles);
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const Vec4 x = s.position[k];
+    if (s.object[k] == 0) {  // the capsule: 0.5 to 1.5 spacings under its surface
+      const double y = std::clamp(double(x.y), -0.025, 0.025);
+      const double depth = 0.03 - std::hypot(double(x.x), double(x.y) - y, double(x.z));
+      EXPECT_GE(depth, 0.5 * kSpacing - 1e-6);
+      EXPECT_LT(depth, 1.5 * kSpacing + 1e-6);
+    } else {  // the octahedron |x|+|y|+|z| <= a about its centre: its faces' distance
+      const double depth = (a - (std::abs(x.x - hull.centre[0]) + std::abs(x.y - hull.centre[1]) +
+                                 std::abs(x.z - hull.centre[2]))) /
+                           std::sqrt(3.0);
+      EXPECT_GE(depth, 0.5 * kSpacing - 1e-5);
+      EXPECT_LT(depth, 1.5 * kSpacing + 1e-5);
+    }
+  }
+  EXPECT_THROW(engine.addConvexHull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 0, 0}, 1000.0),
+               std::logic_error);  // after the exchange
+  BulletEngine flat({});
+  EXPECT_THROW(flat.addConvexHull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {0, 0, 0}, 1000.0),
+               std::invalid_argument);
 }
 
 TEST(BulletEngine, ABoxOfHalfTheWatersDensityFloatsAtItsArchimedesDraft) {
