@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "../sim/fluid_momentum.hpp"
 #include "sph/bullet_engine.hpp"
 #include "sph/simulation.hpp"
 
@@ -114,26 +115,12 @@ TEST_P(BulletShapes, FluidAndBulletBodyConserveMomentum) {
   }
   ASSERT_GT(engine.body(0).particles, 20u);
   sim.attachObjectEngine(engine.exchange());
-  const auto momentum = [&] {
-    std::array<double, 4> out{0, 0, 0, 0};  // x, y, z and Σ m|v| of the fluid
-    const ParticleFrame f = sim.frame(false);
-    const double m = sim.calibration().mass;
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      double v2 = 0.0;
-      for (int a = 0; a < 3; ++a) {
-        out[a] += m * f.velocity[3 * i + a];
-        v2 += double(f.velocity[3 * i + a]) * f.velocity[3 * i + a];
-      }
-      out[3] += m * std::sqrt(v2);
-    }
-    return out;
-  };
-  const std::array<double, 4> before = momentum();
+  const std::array<double, 4> before = testing::fluidMomentum(sim);
   while (sim.time() < (kSanitized ? 0.03 : 0.15)) {
     sim.step();
     engine.step();
   }
-  const std::array<double, 4> after = momentum();
+  const std::array<double, 4> after = testing::fluidMomentum(sim);
   const BulletEngine::Body body = engine.body(0);
   // Under the sanitizers the run is too short for the water to reach every body.
   if (!kSanitized) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "backends.hpp"
+#include "fluid_momentum.hpp"
 #include "sph/object_exchange.hpp"
 #include "sph/simulation.hpp"
 
@@ -91,20 +92,7 @@ Scene blockOnly() {
   return s;
 }
 
-std::array<double, 4> fluidMomentum(const Simulation& sim) {  // x, y, z and Σ m|v|
-  std::array<double, 4> out{0, 0, 0, 0};
-  const ParticleFrame f = sim.frame(false);
-  const double m = sim.calibration().mass;
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    double v2 = 0.0;
-    for (int a = 0; a < 3; ++a) {
-      out[a] += m * f.velocity[3 * i + a];
-      v2 += double(f.velocity[3 * i + a]) * f.velocity[3 * i + a];
-    }
-    out[3] += m * std::sqrt(v2);
-  }
-  return out;
-}
+using testing::fluidMomentum;
 
 class ExternalEngine : public ::testing::TestWithParam<Backend> {};
 
