@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "backends.hpp"
 #include "scene_builders.hpp"
@@ -49,11 +50,48 @@ TEST(BackendEquivalence, DamBreakAfter200StepsMatchesTheCpu) {
   expectTheSameAfter(collapsingColumn(FluidSolver::Wcsph), 200);
 }
 
-// The incompressible solver's iterations stop on an error summed in fixed point, the same on
-// both; its steps are about ten times longer, so 30 of them cover about as much time.
-TEST(BackendEquivalence, DfsphDamBreakAfter30StepsMatchesTheCpu) {
+// The incompressible solver makes two decisions on values that float rounding can tip: when
+// a solve stops (its average error against the tolerance) and where the density solve starts
+// warm (ρ_i ≥ ρ0). One iteration more on one backend, or one particle warm-started on one of
+// them, and from there the runs part like two runs of a splash. Measured on an H200 after 30
+// steps of this column: with both decisions fixed (4 iterations a solve, no warm start), the
+// worst particle 0.024 % of h apart and 0.004 % of ρ0; with the warm start, 4 % of h from the
+// 15th step on; with the shipped settings, 23 % of h, the first iteration count differing at
+// the 3rd step. So the passes are compared with the decisions fixed, and the shipped settings by
+// what the run does as a whole.
+TEST(BackendEquivalence, DfsphPassesAfter30StepsMatchTheCpu) {
   SPH_SKIP_UNLESS_AVAILABLE(Backend::Cuda);
-  expectTheSameAfter(collapsingColumn(FluidSolver::Dfsph), 30);
+  Scene scene = collapsingColumn(FluidSolver::Dfsph);
+  scene.fluid.dfsph.minIterations = scene.fluid.dfsph.maxIterations = 4;
+  scene.fluid.dfsph.warmStart = false;
+  expectTheSameAfter(scene, 30);
+}
+
+// Measured on an H200 after 30 steps (0.103 s): kinetic energy 0.09 % apart, mean density
+// 0.0025 %, the same time reached.
+TEST(BackendEquivalence, DfsphAsShippedCollapsesTheSameWayAsOnTheCpu) {
+  SPH_SKIP_UNLESS_AVAILABLE(Backend::Cuda);
+  const Scene scene = collapsingColumn(FluidSolver::Dfsph);
+  Simulation cpu(scene, testing::on(Backend::Cpu));
+  Simulation gpu(scene, testing::on(Backend::Cuda));
+  for (int i = 0; i < 30; ++i) {
+    cpu.step();
+    gpu.step();
+  }
+  const auto wholeRun = [](const ParticleFrame& frame) {
+    double kinetic = 0.0, density = 0.0;
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+      for (int k = 0; k < 3; ++k) kinetic += std::pow(frame.velocity[3 * i + k], 2);
+      density += frame.density[i];
+    }
+    return std::pair{kinetic, density / double(frame.size())};
+  };
+  const auto [cpuKinetic, cpuDensity] = wholeRun(cpu.frame(false));
+  const auto [gpuKinetic, gpuDensity] = wholeRun(gpu.frame(false));
+  EXPECT_NEAR(gpu.time(), cpu.time(), 1e-3 * cpu.time());
+  EXPECT_NEAR(gpuKinetic, cpuKinetic, 0.01 * cpuKinetic);  // the column is falling: > 0
+  EXPECT_NEAR(gpuDensity, cpuDensity, 5e-4 * cpuDensity);
+  EXPECT_GT(cpuKinetic, 0.0);
 }
 
 }  // namespace
