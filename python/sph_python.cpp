@@ -423,6 +423,10 @@ PYBIND11_MODULE(_sph, m) {
       .def("attach_object_engine", &sph::Simulation::attachObjectEngine, py::arg("exchange"),
            "Couples the objects an ObjectExchange publishes to the fluid (once, before the "
            "first step).")
+      .def("contain_fluid", &sph::Simulation::containFluid, py::arg("object"), py::arg("ids"),
+           "The fluid particles `ids` are held by object `object` of the attached engine: one "
+           "found outside it from now on counts as leaked (after attach_object_engine, before "
+           "the first step).")
       .def(
           "objects",
           [](const sph::Simulation& s) {

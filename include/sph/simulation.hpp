@@ -154,6 +154,12 @@ class Simulation {
   // fluid's support radius. Throws std::logic_error when the scene has objects of its own or an
   // engine is attached already, std::invalid_argument on a null exchange.
   void attachObjectEngine(std::shared_ptr<ObjectExchange> exchange);
+  // The fluid particles `ids` are held by object `object` of the attached engine (a vessel, a
+  // closed soft body): from now on one found outside it counts as leaked (leakedCount,
+  // leakedIds, leakPositions), as for a scene's own containers. Call after attachObjectEngine,
+  // before the first step; throws std::logic_error otherwise, std::invalid_argument on an id
+  // that is no fluid particle's or a negative object.
+  void containFluid(std::int32_t object, const std::vector<std::uint32_t>& ids);
 
   // An external acceleration (m/s², added to gravity) for each fluid particle, by id:
   // `byId` holds x, y, z for ids 0 .. fluidParticles-1. It stays until replaced; an empty

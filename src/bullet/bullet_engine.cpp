@@ -1,5 +1,7 @@
 #include "sph/bullet_engine.hpp"
 
+#include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
+#include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
 #include <LinearMath/btConvexHullComputer.h>
 #include <btBulletDynamicsCommon.h>
 
@@ -10,6 +12,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "soft_bodies.hpp"
 
 namespace sph {
 namespace {
@@ -177,11 +181,11 @@ Sampling sampleHull(const Polytope& p, const std::vector<BulletEngine::Vec3d>& v
 
 struct BulletEngine::Impl {
   Settings settings;
-  btDefaultCollisionConfiguration configuration;
+  btSoftBodyRigidBodyCollisionConfiguration configuration;
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btSequentialImpulseConstraintSolver solver;
-  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  btSoftRigidDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<btRigidBody>> statics;
 
@@ -191,20 +195,52 @@ struct BulletEngine::Impl {
     std::uint32_t firstHandle = 0;
     double mass = 0.0;
   };
+  struct Soft {
+    std::unique_ptr<btSoftBody> body;
+    std::uint32_t firstHandle = 0;
+    double breakingStrain = 0.0;
+    std::vector<std::uint8_t> cut;  // by node: next to a torn link
+    std::size_t torn = 0;
+  };
   std::vector<Free> bodies;
+  std::vector<Soft> softs;
+  struct Entry {
+    bool soft = false;
+    std::size_t index = 0;  // in bodies or softs
+  };
+  std::vector<Entry> objects;  // by object id
+  std::uint32_t handleCount = 0;
   std::shared_ptr<ObjectExchange> exchange;
   std::vector<Vec3> force;  // by handle, the last take
   double time = 0.0;
 
-  explicit Impl(const Settings& s) : settings(s) { world.setGravity(toBt(s.gravity)); }
+  explicit Impl(const Settings& s) : settings(s) {
+    world.setGravity(toBt(s.gravity));
+    btSoftBodyWorldInfo& info = world.getWorldInfo();
+    info.m_gravity = toBt(s.gravity);
+    info.air_density = 0;  // the fluid is the only medium
+    info.m_sparsesdf.Initialize();
+    // A soft body's nodes integrate their force once, at the first substep, and clear it; the
+    // fluid's force is held over the whole step, so it is put back before every substep.
+    world.setInternalTickCallback(
+        [](btDynamicsWorld* w, btScalar) {
+          static_cast<Impl*>(w->getWorldUserInfo())->pushNodes();
+        },
+        this, true);
+  }
   ~Impl() {
+    for (Soft& f : softs) world.removeSoftBody(f.body.get());
     for (Free& f : bodies) world.removeRigidBody(f.body.get());
     for (auto& b : statics) world.removeRigidBody(b.get());
   }
 
+  void checkAddable() const {
+    if (exchange) throw std::logic_error("BulletEngine: a body added after exchange()");
+  }
+
   int add(std::unique_ptr<btCollisionShape> shape, Sampling sampling, const Vec3d& centre,
           double density, double volume) {
-    if (exchange) throw std::logic_error("BulletEngine: a body added after exchange()");
+    checkAddable();
     if (!(density > 0.0)) throw std::invalid_argument("BulletEngine: expected a density > 0");
     const double mass = density * volume;
     btVector3 inertia(0, 0, 0);
@@ -220,36 +256,71 @@ struct BulletEngine::Impl {
     Free f;
     f.body = std::move(body);
     f.sampling = std::move(sampling);
-    f.firstHandle = bodies.empty() ? 0
-                                   : bodies.back().firstHandle +
-                                         std::uint32_t(bodies.back().sampling.offset.size());
+    f.firstHandle = handleCount;
     f.mass = mass;
+    handleCount += std::uint32_t(f.sampling.offset.size());
+    objects.push_back({false, bodies.size()});
     bodies.push_back(std::move(f));
     shapes.push_back(std::move(shape));
-    return int(bodies.size()) - 1;
+    return int(objects.size()) - 1;
   }
 
-  std::size_t handles() const {
-    return bodies.empty() ? 0 : bodies.back().firstHandle + bodies.back().sampling.offset.size();
+  int addSoft(std::unique_ptr<btSoftBody> body, const SoftMaterial& material) {
+    bullet::applyMaterial(*body, material, settings.spacing);
+    body->setActivationState(DISABLE_DEACTIVATION);
+    world.addSoftBody(body.get());
+    Soft f;
+    f.firstHandle = handleCount;
+    f.breakingStrain = material.breakingStrain;
+    f.cut.assign(std::size_t(body->m_nodes.size()), 0);
+    handleCount += std::uint32_t(body->m_nodes.size());
+    f.body = std::move(body);
+    objects.push_back({true, softs.size()});
+    softs.push_back(std::move(f));
+    return int(objects.size()) - 1;
+  }
+
+  void pushNodes() {
+    for (Soft& f : softs) {
+      btSoftBody& body = *f.body;
+      for (int k = 0; k < body.m_nodes.size(); ++k) {
+        const Vec3& g = force[f.firstHandle + std::uint32_t(k)];
+        body.addForce(btVector3(g.x, g.y, g.z), k);  // nothing on a pinned node
+      }
+    }
   }
 
   void publish() {
     ObjectSurface& s = exchange->back();
     s.clear();
     const float radius = float(0.5 * settings.spacing);
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      const btRigidBody& body = *bodies[b].body;
+    for (std::size_t id = 0; id < objects.size(); ++id) {
+      if (objects[id].soft) {
+        const Soft& f = softs[objects[id].index];
+        const btSoftBody& body = *f.body;
+        for (int k = 0; k < body.m_nodes.size(); ++k) {
+          const btSoftBody::Node& node = body.m_nodes[k];
+          // A rope's nodes have no normal: the contact pushes along the line of centres anyway.
+          const btVector3 n = node.m_n.length2() > 0 ? node.m_n.normalized() : btVector3(0, 0, 0);
+          s.add(Vec3{float(node.m_x.x()), float(node.m_x.y()), float(node.m_x.z())},
+                Vec3{float(node.m_v.x()), float(node.m_v.y()), float(node.m_v.z())}, radius,
+                Vec3{float(n.x()), float(n.y()), float(n.z())}, f.firstHandle + std::uint32_t(k),
+                std::int32_t(id), f.cut[std::size_t(k)] != 0);
+        }
+        continue;
+      }
+      const Free& f = bodies[objects[id].index];
+      const btRigidBody& body = *f.body;
       const btTransform& t = body.getWorldTransform();
       const btVector3 v = body.getLinearVelocity(), w = body.getAngularVelocity();
-      const Sampling& sampling = bodies[b].sampling;
-      for (std::size_t k = 0; k < sampling.offset.size(); ++k) {
-        const btVector3 r = t.getBasis() * sampling.offset[k];
+      for (std::size_t k = 0; k < f.sampling.offset.size(); ++k) {
+        const btVector3 r = t.getBasis() * f.sampling.offset[k];
         const btVector3 x = t.getOrigin() + r, u = v + w.cross(r);
-        const btVector3 n = t.getBasis() * sampling.normal[k];
+        const btVector3 n = t.getBasis() * f.sampling.normal[k];
         s.add(Vec3{float(x.x()), float(x.y()), float(x.z())},
               Vec3{float(u.x()), float(u.y()), float(u.z())}, radius,
-              Vec3{float(n.x()), float(n.y()), float(n.z())},
-              bodies[b].firstHandle + std::uint32_t(k), std::int32_t(b), false);
+              Vec3{float(n.x()), float(n.y()), float(n.z())}, f.firstHandle + std::uint32_t(k),
+              std::int32_t(id), false);
       }
     }
     s.time = time;
@@ -262,6 +333,8 @@ BulletEngine::BulletEngine(const Settings& settings) : impl_(std::make_unique<Im
     throw std::invalid_argument("BulletEngine: expected a spacing > 0");
   if (!(settings.longestSubstep > 0.0))
     throw std::invalid_argument("BulletEngine: expected a longest substep > 0");
+  if (settings.leastSubsteps < 1 || settings.leastSubsteps > 1000)
+    throw std::invalid_argument("BulletEngine: expected at least 1 substep and at most 1000");
 }
 
 BulletEngine::~BulletEngine() = default;
@@ -298,6 +371,37 @@ int BulletEngine::addConvexHull(const std::vector<Vec3d>& vertices, const Vec3d&
                     fromBt(centre), density, p.volume);
 }
 
+int BulletEngine::addSoftBall(double radius, const Vec3d& centre, double mass,
+                              const SoftMaterial& material) {
+  impl_->checkAddable();
+  if (!(mass > 0.0)) throw std::invalid_argument("BulletEngine: expected a mass > 0");
+  return impl_->addSoft(bullet::makeSoftBall(impl_->world.getWorldInfo(), radius, toBt(centre),
+                                             mass, impl_->settings.spacing),
+                        material);
+}
+
+int BulletEngine::addRope(const Vec3d& from, const Vec3d& to, double mass,
+                          const SoftMaterial& material, unsigned pinned) {
+  impl_->checkAddable();
+  if (!(mass > 0.0)) throw std::invalid_argument("BulletEngine: expected a mass > 0");
+  if (!(toBt(from).distance(toBt(to)) > 0))
+    throw std::invalid_argument("BulletEngine: a rope's ends must differ");
+  return impl_->addSoft(bullet::makeRope(impl_->world.getWorldInfo(), toBt(from), toBt(to), mass,
+                                         impl_->settings.spacing, pinned),
+                        material);
+}
+
+int BulletEngine::addCloth(const Vec3d& corner, const Vec3d& edgeU, const Vec3d& edgeV, double mass,
+                           const SoftMaterial& material, unsigned pinned) {
+  impl_->checkAddable();
+  if (!(mass > 0.0)) throw std::invalid_argument("BulletEngine: expected a mass > 0");
+  if (!(toBt(edgeU).cross(toBt(edgeV)).length() > 0))
+    throw std::invalid_argument("BulletEngine: a cloth's edges must span an area");
+  return impl_->addSoft(bullet::makeCloth(impl_->world.getWorldInfo(), toBt(corner), toBt(edgeU),
+                                          toBt(edgeV), mass, impl_->settings.spacing, pinned),
+                        material);
+}
+
 void BulletEngine::addStaticBox(const Vec3d& halfExtents, const Vec3d& centre) {
   auto shape = std::make_unique<btBoxShape>(toBt(halfExtents));
   btTransform at;
@@ -313,8 +417,8 @@ void BulletEngine::addStaticBox(const Vec3d& halfExtents, const Vec3d& centre) {
 
 std::shared_ptr<ObjectExchange> BulletEngine::exchange() {
   if (!impl_->exchange) {
-    if (impl_->bodies.empty()) throw std::logic_error("BulletEngine: no body to exchange");
-    impl_->exchange = std::make_shared<ObjectExchange>(impl_->handles());
+    if (impl_->objects.empty()) throw std::logic_error("BulletEngine: no body to exchange");
+    impl_->exchange = std::make_shared<ObjectExchange>(impl_->handleCount);
     impl_->publish();
   }
   return impl_->exchange;
@@ -339,17 +443,40 @@ void BulletEngine::step() {
     body.applyCentralForce(total);
     body.applyTorque(torque);
   }
-  const int substeps = std::max(1, int(std::ceil(span / s.settings.longestSubstep - 1e-9)));
+  const int substeps =
+      std::max(s.settings.leastSubsteps, int(std::ceil(span / s.settings.longestSubstep - 1e-9)));
   s.world.stepSimulation(btScalar(span), substeps, btScalar(span / substeps));
+  for (Impl::Soft& f : s.softs)
+    f.torn += bullet::tearOverstretchedLinks(*f.body, f.breakingStrain, f.cut);
   s.time += span;
   s.publish();
 }
 
 BulletEngine::Body BulletEngine::body(int id) const {
-  if (id < 0 || std::size_t(id) >= impl_->bodies.size())
+  if (id < 0 || std::size_t(id) >= impl_->objects.size())
     throw std::out_of_range("BulletEngine::body: no body " + std::to_string(id));
-  const Impl::Free& f = impl_->bodies[std::size_t(id)];
+  const Impl::Entry entry = impl_->objects[std::size_t(id)];
   Body b;
+  if (entry.soft) {
+    const Impl::Soft& f = impl_->softs[entry.index];
+    btVector3 moment(0, 0, 0), momentum(0, 0, 0);
+    for (int k = 0; k < f.body->m_nodes.size(); ++k) {
+      const btSoftBody::Node& node = f.body->m_nodes[k];
+      if (node.m_im <= 0) continue;
+      const double m = 1.0 / double(node.m_im);
+      b.mass += m;
+      moment += node.m_x * btScalar(m);
+      momentum += node.m_v * btScalar(m);
+    }
+    b.centre = fromBt(moment / btScalar(b.mass));
+    b.velocity = fromBt(momentum / btScalar(b.mass));
+    b.particles = std::size_t(f.body->m_nodes.size());
+    b.soft = true;
+    b.links = std::size_t(f.body->m_links.size());
+    b.tornLinks = f.torn;
+    return b;
+  }
+  const Impl::Free& f = impl_->bodies[entry.index];
   b.centre = fromBt(f.body->getWorldTransform().getOrigin());
   b.velocity = fromBt(f.body->getLinearVelocity());
   b.spin = fromBt(f.body->getAngularVelocity());
@@ -359,7 +486,7 @@ BulletEngine::Body BulletEngine::body(int id) const {
 }
 
 std::size_t BulletEngine::bodyCount() const {
-  return impl_->bodies.size();
+  return impl_->objects.size();
 }
 
 double BulletEngine::time() const {

@@ -68,6 +68,25 @@ void Simulation::attachObjectEngine(std::shared_ptr<ObjectExchange> exchange) {
   s.seenPublication = 0;
 }
 
+void Simulation::containFluid(std::int32_t object, const std::vector<std::uint32_t>& ids) {
+  Impl& s = *impl_;
+  if (!s.externalExchange)
+    throw std::logic_error("containFluid: attach an object engine first (attachObjectEngine)");
+  if (s.steps != 0) throw std::logic_error("containFluid: call it before the first step");
+  if (object < 0)
+    throw std::invalid_argument("containFluid: expected an object id >= 0, got " +
+                                std::to_string(object));
+  const std::size_t n = s.initialFluid;
+  for (std::uint32_t id : ids)
+    if (id >= n)
+      throw std::invalid_argument("containFluid: " + std::to_string(id) +
+                                  " is no fluid particle's id (there are " + std::to_string(n) +
+                                  ")");
+  if (s.externalContainers.empty()) s.externalContainers.assign(n, -1);
+  for (std::uint32_t id : ids) s.externalContainers[id] = object;
+  s.engine->setContainers(s.externalContainers);
+}
+
 void Simulation::setExternalAcceleration(const std::vector<float>& byId) {
   if (byId.empty()) {
     impl_->engine->setExternalAcceleration({});

@@ -68,6 +68,7 @@ struct Simulation::Impl {
   // exchange.
   std::unique_ptr<sim::ObjectRunner> objects;
   std::shared_ptr<ObjectExchange> externalExchange;
+  std::vector<std::int32_t> externalContainers;  // by fluid id: the attached object holding it
   std::vector<std::int32_t> externalObjectOfHandle;  // from the newest publication read
   bool coupled() const { return objects || externalExchange; }
   ObjectExchange& exchange() { return objects ? objects->exchange() : *externalExchange; }

@@ -131,7 +131,7 @@ std::vector<ObjectStats> Simulation::objectStats() const {
 std::vector<std::uint32_t> Simulation::leakedIds() const {
   const Impl& s = *impl_;
   std::vector<std::uint32_t> out;
-  if (!s.objects) return out;
+  if (!s.objects && s.externalContainers.empty()) return out;
   const sim::HostContainment c = s.engine->downloadContainment();
   for (std::size_t k = 0; k < c.containerById.size(); ++k)
     if (c.containerById[k] >= 0 && c.insideById[k] == 0) out.push_back(std::uint32_t(k));
@@ -145,7 +145,7 @@ std::uint64_t Simulation::leakedCount() const {
 std::vector<float> Simulation::leakPositions() const {
   const Impl& s = *impl_;
   std::vector<float> out;
-  if (!s.objects) return out;
+  if (!s.objects && s.externalContainers.empty()) return out;
   const sim::HostContainment c = s.engine->downloadContainment();
   for (std::size_t k = 0; k < c.containerById.size(); ++k) {
     const Vec4 x = c.firstExitById[k];
