@@ -13,6 +13,7 @@
 #include "report.hpp"
 #include "sph/box_drop_scene.hpp"
 #include "sph/devices.hpp"
+#include "sph/error.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::cli {
@@ -52,6 +53,10 @@ struct StageSamples {
 // Times `steps` steps after `warmup`; one row of the table.
 nlohmann::json timeScene(const std::string& label, const Scene& scene,
                          const SimulationOptions& where, const BenchOptions& options) {
+  if (scene.objectEngine.type == ObjectEngineKind::Bullet && !scene.objects.empty())
+    throw InputError(scene.sourcePath +
+                     ": object_engine.type: \"bullet\": its world steps outside the fluid's "
+                     "stages, which this bench times; time it with sph run (its ms per step)");
   Simulation sim(scene, where);
   for (int i = 0; i < options.warmupSteps; ++i) sim.step();
   StageSamples samples;

@@ -16,6 +16,7 @@
 #include "progress.hpp"
 #include "report.hpp"
 #include "run_output.hpp"
+#include "scene_engine.hpp"
 #include "sph/error.hpp"
 #include "sph/simulation.hpp"
 
@@ -96,6 +97,12 @@ int runCommand(const RunOptions& options) {
                           : options.out.empty() ? "out/" + name
                                                 : options.out;
   Simulation sim(scene, simulationOptions(options.backend, options.device));
+  const std::unique_ptr<cli::SceneEngine> sceneEngine = cli::attachSceneEngine(scene, sim);
+  if (sceneEngine && (resumed || options.checkpointEvery > 0.0))
+    throw InputError(scene.sourcePath +
+                     ": object_engine.type: \"bullet\" runs keep no checkpoints (Bullet's "
+                     "world is not saved with the fluid); expected no --checkpoint-every or "
+                     "--resume");
   if (resumed) {
     std::istringstream state(resumed->state);
     try {
@@ -175,6 +182,7 @@ int runCommand(const RunOptions& options) {
       const double frameTime = std::min(frame * framePeriod, endTime);
       while (sim.time() < frameTime) {
         sim.step(frameTime);
+        if (sceneEngine) sceneEngine->step();
         progress.update(sim.time(), sim.stepCount());
       }
       writeFrame();

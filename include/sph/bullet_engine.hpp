@@ -18,8 +18,11 @@
 #include <vector>
 
 #include "sph/object_exchange.hpp"
+#include "sph/scene.hpp"
 
 namespace sph {
+
+class Simulation;
 
 class BulletEngine {
  public:
@@ -32,6 +35,15 @@ class BulletEngine {
                                    // fluid's rate, when step() follows every fluid step)
   };
   explicit BulletEngine(const Settings& settings);
+  // The bodies of a scene whose object_engine.type is "bullet", in its objects' order: rigid
+  // boxes, spheres, capsules along y and meshes (as their convex hull), and deformable spheres
+  // as soft balls; its tanks and box walls as fixed boxes for them to collide with. Throws
+  // sph::InputError naming the object and key for what Bullet cannot take.
+  static std::unique_ptr<BulletEngine> forScene(const Scene& scene);
+  // Attaches the bodies to `sim` (Simulation::attachObjectEngine) and gives each closed soft
+  // ball the fluid that starts inside it (Simulation::containFluid), as the built-in engine's
+  // vessels hold theirs.
+  void attachTo(Simulation& sim);
   ~BulletEngine();
   BulletEngine(const BulletEngine&) = delete;
   BulletEngine& operator=(const BulletEngine&) = delete;
@@ -69,6 +81,10 @@ class BulletEngine {
   // corners at s, t = (0, 0), (1, 0), (0, 1), (1, 1).
   int addCloth(const Vec3d& corner, const Vec3d& edgeU, const Vec3d& edgeV, double mass,
                const SoftMaterial& material, unsigned pinned = 0);
+  // A body's velocity (m/s) and a rigid body's spin (rad/s) from now on.
+  void setVelocity(int id, const Vec3d& velocity, const Vec3d& spin = {0, 0, 0});
+  // Pins a soft body's nodes inside `box` where they are: no force moves them.
+  void pinNodes(int id, const AxisBox& box);
   // A fixed box the bodies collide with (a tank's floor and walls); the fluid does not see it.
   void addStaticBox(const Vec3d& halfExtents, const Vec3d& centre);
 

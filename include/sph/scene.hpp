@@ -305,8 +305,14 @@ struct InteractionDesc {
   bool cutAwareDamping = true;            // no damping against particles whose springs broke
 };
 
+// Which engine moves the scene's objects. Builtin: src/objects, made by the Simulation.
+// Bullet: a Bullet world (sph/bullet_engine.hpp, BulletEngine::forScene) that whoever runs the
+// scene attaches (`sph run` does); the Simulation makes none of the objects itself.
+enum class ObjectEngineKind { Builtin, Bullet };
+
 // How the object engine runs beside the fluid (Meteer 2011, figure 1).
 struct ObjectEngineDesc {
+  ObjectEngineKind type = ObjectEngineKind::Builtin;
   double rate = 1.0;      // engine steps per fluid step: 2 runs it twice as often, 0.5 half
   bool ownThread = true;  // in its own thread, in lock-step with the fluid (deterministic)
 };

@@ -148,9 +148,11 @@ class Simulation {
   // scene's `interaction` (contact forces, or boundary coupling under DFSPH) and pushed back
   // alike. Your engine takes the forces, steps and publishes in its own thread or between calls
   // to step(); the time step keeps its fastest particle from crossing a quarter of a fluid
-  // particle's radius in one. Its objects are its own: not in frames, objectStats() gives each
-  // one's fluid force alone (named by its id), and saveState refuses. A step throws
-  // std::invalid_argument on a publication with a particle whose contact reach passes the
+  // particle's radius in one. Its objects are in frames as it last published them (ids after the
+  // walls', by handle); objectStats() gives each one's fluid force alone (named by its id), and
+  // saveState refuses. A scene whose `object_engine.type` is "bullet" makes none of its objects
+  // and refuses to step until an engine is attached (BulletEngine::forScene makes one). A step
+  // throws std::invalid_argument on a publication with a particle whose contact reach passes the
   // fluid's support radius. Throws std::logic_error when the scene has objects of its own or an
   // engine is attached already, std::invalid_argument on a null exchange.
   void attachObjectEngine(std::shared_ptr<ObjectExchange> exchange);

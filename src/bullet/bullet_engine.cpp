@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "soft_bodies.hpp"
+#include "sph/simulation.hpp"
 
 namespace sph {
 namespace {
@@ -201,6 +202,8 @@ struct BulletEngine::Impl {
     double breakingStrain = 0.0;
     std::vector<std::uint8_t> cut;  // by node: next to a torn link
     std::size_t torn = 0;
+    double ballRadius = 0.0;  // a closed ball's, at the start; 0: a rope or a cloth
+    btVector3 ballCentre{0, 0, 0};
   };
   std::vector<Free> bodies;
   std::vector<Soft> softs;
@@ -375,9 +378,13 @@ int BulletEngine::addSoftBall(double radius, const Vec3d& centre, double mass,
                               const SoftMaterial& material) {
   impl_->checkAddable();
   if (!(mass > 0.0)) throw std::invalid_argument("BulletEngine: expected a mass > 0");
-  return impl_->addSoft(bullet::makeSoftBall(impl_->world.getWorldInfo(), radius, toBt(centre),
-                                             mass, impl_->settings.spacing),
-                        material);
+  const int id = impl_->addSoft(bullet::makeSoftBall(impl_->world.getWorldInfo(), radius,
+                                                     toBt(centre), mass, impl_->settings.spacing),
+                                material);
+  Impl::Soft& ball = impl_->softs.back();
+  ball.ballRadius = radius;
+  ball.ballCentre = toBt(centre);
+  return id;
 }
 
 int BulletEngine::addRope(const Vec3d& from, const Vec3d& to, double mass,
@@ -400,6 +407,49 @@ int BulletEngine::addCloth(const Vec3d& corner, const Vec3d& edgeU, const Vec3d&
   return impl_->addSoft(bullet::makeCloth(impl_->world.getWorldInfo(), toBt(corner), toBt(edgeU),
                                           toBt(edgeV), mass, impl_->settings.spacing, pinned),
                         material);
+}
+
+void BulletEngine::setVelocity(int id, const Vec3d& velocity, const Vec3d& spin) {
+  if (id < 0 || std::size_t(id) >= impl_->objects.size())
+    throw std::out_of_range("BulletEngine::setVelocity: no body " + std::to_string(id));
+  const Impl::Entry entry = impl_->objects[std::size_t(id)];
+  if (entry.soft) {
+    impl_->softs[entry.index].body->setVelocity(toBt(velocity));
+  } else {
+    btRigidBody& body = *impl_->bodies[entry.index].body;
+    body.setLinearVelocity(toBt(velocity));
+    body.setAngularVelocity(toBt(spin));
+  }
+}
+
+void BulletEngine::pinNodes(int id, const AxisBox& box) {
+  if (id < 0 || std::size_t(id) >= impl_->objects.size() || !impl_->objects[std::size_t(id)].soft)
+    throw std::out_of_range("BulletEngine::pinNodes: no soft body " + std::to_string(id));
+  btSoftBody& body = *impl_->softs[impl_->objects[std::size_t(id)].index].body;
+  for (int k = 0; k < body.m_nodes.size(); ++k) {
+    const btVector3& x = body.m_nodes[k].m_x;
+    bool inside = true;
+    for (int a = 0; a < 3; ++a) inside = inside && x[a] >= box.min[a] && x[a] <= box.max[a];
+    if (inside) body.setMass(k, 0);
+  }
+}
+
+void BulletEngine::attachTo(Simulation& sim) {
+  sim.attachObjectEngine(exchange());
+  const ParticleFrame fluid = sim.frame(false);
+  for (std::size_t id = 0; id < impl_->objects.size(); ++id) {
+    if (!impl_->objects[id].soft) continue;
+    const Impl::Soft& f = impl_->softs[impl_->objects[id].index];
+    if (f.ballRadius <= 0.0) continue;
+    std::vector<std::uint32_t> inside;
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      if (fluid.kind[i] != std::uint8_t(ParticleKind::Fluid)) continue;
+      const btVector3 x(fluid.position[3 * i], fluid.position[3 * i + 1],
+                        fluid.position[3 * i + 2]);
+      if (x.distance(f.ballCentre) < f.ballRadius) inside.push_back(fluid.id[i]);
+    }
+    if (!inside.empty()) sim.containFluid(std::int32_t(id), inside);
+  }
 }
 
 void BulletEngine::addStaticBox(const Vec3d& halfExtents, const Vec3d& centre) {

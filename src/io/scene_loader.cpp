@@ -254,6 +254,7 @@ InteractionDesc readInteraction(const ObjectReader& in) {
 
 ObjectEngineDesc readObjectEngine(const ObjectReader& in) {
   ObjectEngineDesc e;
+  e.type = in.choice("type", e.type, kObjectEngineNames);
   e.rate = in.number("rate", e.rate, NumberRule{0, 16, true, false});
   e.ownThread = in.boolean("own_thread", e.ownThread);
   return e;

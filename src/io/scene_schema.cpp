@@ -64,7 +64,7 @@ KeySchema buildSchema() {
               {value("coupling"), value("influence_ratio"), value("distance_exponent"),
                value("stiffness"), value("damping"), value("shear"), value("max_acceleration"),
                value("cut_aware_damping")}),
-       object("object_engine", {value("rate"), value("own_thread")}),
+       object("object_engine", {value("type"), value("rate"), value("own_thread")}),
        object("calibration", {value("mass"), value("max_expected_speed"), value("speed_of_sound"),
                               value("stiffness")}),
        object("time", {value("duration"), value("cfl"), value("force_factor"),

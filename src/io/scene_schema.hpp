@@ -65,6 +65,8 @@ inline constexpr NamedValue<DensityModel> kDensityModelNames[] = {
     {"summation", DensityModel::Summation}, {"continuity", DensityModel::Continuity}};
 inline constexpr NamedValue<FluidSolver> kSolverNames[] = {{"wcsph", FluidSolver::Wcsph},
                                                            {"dfsph", FluidSolver::Dfsph}};
+inline constexpr NamedValue<ObjectEngineKind> kObjectEngineNames[] = {
+    {"builtin", ObjectEngineKind::Builtin}, {"bullet", ObjectEngineKind::Bullet}};
 inline constexpr NamedValue<ObjectCoupling> kCouplingNames[] = {
     {"contact", ObjectCoupling::Contact}, {"boundary", ObjectCoupling::Boundary}};
 inline constexpr NamedValue<ViscosityModel> kViscosityNames[] = {

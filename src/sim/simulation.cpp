@@ -18,6 +18,11 @@ Simulation::~Simulation() = default;
 // density at rest; the weakly compressible one does neither, its pressure is in the forces.
 void Simulation::step(double until) {
   Impl& s = *impl_;
+  if (s.scene.objectEngine.type == ObjectEngineKind::Bullet && !s.scene.objects.empty() &&
+      !s.externalExchange)
+    throw std::logic_error(s.scene.sourcePath +
+                           ": object_engine.type is \"bullet\": attach its Bullet world before "
+                           "stepping (sph::BulletEngine::forScene, sph/bullet_engine.hpp)");
   const backend::ScopedThreadCount passThreads(s.threads);
   sim::FluidEngine& engine = *s.engine;
   StepProfile& profile = s.profile;

@@ -69,6 +69,7 @@ struct Simulation::Impl {
   std::unique_ptr<sim::ObjectRunner> objects;
   std::shared_ptr<ObjectExchange> externalExchange;
   std::vector<std::int32_t> externalContainers;  // by fluid id: the attached object holding it
+  ObjectSurface externalSurface;  // the attached engine's newest publication read, for frames
   std::vector<std::int32_t> externalObjectOfHandle;  // from the newest publication read
   bool coupled() const { return objects || externalExchange; }
   ObjectExchange& exchange() { return objects ? objects->exchange() : *externalExchange; }
@@ -115,7 +116,8 @@ struct Simulation::Impl {
     params = setup.params;
     dt = calibration.initialDt;
     std::optional<objects::ObjectWorld> world;
-    if (!scene.objects.empty()) {
+    // Under Bullet the scene's objects are the attached engine's (sph/bullet_engine.hpp).
+    if (!scene.objects.empty() && scene.objectEngine.type == ObjectEngineKind::Builtin) {
       objects::WorldSettings settings = sim::worldSettings(scene, calibration);
       settings.staticParticles = setup.walls;  // objects rest on the walls that hold the fluid
       settings.staticRadius = static_cast<float>(0.5 * scene.fluid.spacing);
@@ -124,6 +126,12 @@ struct Simulation::Impl {
       checkContactReach(*world);
     }
 
+    if (scene.objectEngine.type == ObjectEngineKind::Bullet)
+      for (std::size_t b = 0; b < scene.fluid.blocks.size(); ++b)
+        if (!scene.fluid.blocks[b].inside.empty())
+          throw InputError(scene.sourcePath + ": fluid.blocks[" + std::to_string(b) +
+                           "].inside: not with object_engine.type \"bullet\" (Bullet's bodies "
+                           "are made outside the simulation); expected no \"inside\"");
     sampleFluid(setup, walls, world ? &*world : nullptr);
     initialFluid = setup.positions.size();
     engine =
@@ -252,6 +260,7 @@ struct Simulation::Impl {
       exchange().readIfNew(seenPublication, [&](const ObjectSurface& surface) {
         checkExternalSurface(surface);
         objectMaxSpeed = engine->setObjectSurface(surface, interactionParams);
+        externalSurface = surface;
       });
       return;
     }

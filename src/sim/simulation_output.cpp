@@ -83,14 +83,31 @@ void appendObjects(FrameBuilder& b, const objects::ParticleState& p, std::uint64
   }
 }
 
+// An attached engine's particles as it last published them, their ids following the walls' by
+// handle.
+void appendAttached(FrameBuilder& b, const ObjectSurface& s, std::uint64_t firstId,
+                    float restDensity) {
+  std::vector<std::size_t> byHandle(s.size());
+  for (std::size_t k = 0; k < s.size(); ++k) byHandle[k] = k;
+  std::sort(byHandle.begin(), byHandle.end(),
+            [&](std::size_t a, std::size_t c) { return s.handle[a] < s.handle[c]; });
+  for (std::size_t k : byHandle) {
+    b.push(static_cast<std::uint32_t>(firstId + s.handle[k]), s.position[k],
+           makeVec4(xyz(s.velocity[k]), 0.0f), restDensity, 0.0f, ParticleKind::Object, s.object[k],
+           true);
+  }
+}
+
 // The walls (if asked), then the objects as their engine has them now.
 void appendSolids(FrameBuilder& b, const sim::FluidEngine& engine, const sim::ObjectRunner* objects,
-                  std::uint64_t initialFluid, float restDensity, bool includeBoundary) {
+                  const ObjectSurface& attached, std::uint64_t initialFluid, float restDensity,
+                  bool includeBoundary) {
   if (includeBoundary) appendWalls(b, engine.downloadWalls(), initialFluid, restDensity);
   if (objects) {
     objects->wait();
     appendObjects(b, objects->world().particles(), initialFluid + engine.wallCount(), restDensity);
   }
+  appendAttached(b, attached, initialFluid + engine.wallCount(), restDensity);
 }
 
 }  // namespace
@@ -101,7 +118,10 @@ std::vector<ObjectStats> Simulation::objectStats() const {
   if (s.externalExchange) {  // what the fluid knows of an attached engine's objects
     for (std::size_t o = 0; o < s.fluidForceOnObject.size(); ++o) {
       ObjectStats stats;
-      stats.name = "object " + std::to_string(o);
+      // A scene's objects made by Bullet keep their scene names (BulletEngine::forScene).
+      const bool named =
+          s.scene.objectEngine.type == ObjectEngineKind::Bullet && o < s.scene.objects.size();
+      stats.name = named ? s.scene.objects[o].name : "object " + std::to_string(o);
       const Vec3 f = s.fluidForceOnObject[o];
       stats.fluidForce = {f.x, f.y, f.z};
       out.push_back(stats);
@@ -193,6 +213,7 @@ struct FrameCapture::Impl {
   std::unique_ptr<sim::PendingParticles> fluid;
   FrameStats stats;  // all but what the fluid's copy gives
   std::optional<objects::ParticleState> objects;
+  ObjectSurface attached;  // an attached engine's, as last published
   std::uint64_t initialFluid = 0;
   std::uint64_t firstObjectId = 0;
   float restDensity = 0.0f;
@@ -216,6 +237,7 @@ void FrameCapture::take(ParticleFrame& frame, FrameStats& stats) {
   b.reserve(f.id.size() + (c.objects ? c.objects->size() : 0));
   appendFluid(b, f, c.initialFluid, c.surfaceThreshold);
   if (c.objects) appendObjects(b, *c.objects, c.firstObjectId, c.restDensity);
+  appendAttached(b, c.attached, c.firstObjectId, c.restDensity);
   frame = std::move(b.out);
 }
 
@@ -255,6 +277,7 @@ FrameCapture Simulation::capture() const {
     s.objects->wait();
     c->objects = s.objects->world().particles();
   }
+  c->attached = s.externalSurface;
   c->initialFluid = s.initialFluid;
   c->firstObjectId = s.initialFluid + s.engine->wallCount();
   c->restDensity = s.params.restDensity;
@@ -273,8 +296,8 @@ ParticleFrame Simulation::frame(bool includeBoundary) const {
   b.reserve(f.id.size() + (includeBoundary ? s.engine->wallCount() : 0) +
             s.calibration.objectParticles);
   appendFluid(b, f, s.initialFluid, s.params.surfaceThreshold);
-  appendSolids(b, *s.engine, s.objects.get(), s.initialFluid, s.params.restDensity,
-               includeBoundary);
+  appendSolids(b, *s.engine, s.objects.get(), s.externalSurface, s.initialFluid,
+               s.params.restDensity, includeBoundary);
   return std::move(b.out);
 }
 
@@ -290,8 +313,8 @@ ParticleFrame Simulation::solidFrame(bool includeBoundary) const {
   b.out.time = s.time;
   b.out.step = s.steps;
   b.reserve((includeBoundary ? s.engine->wallCount() : 0) + s.calibration.objectParticles);
-  appendSolids(b, *s.engine, s.objects.get(), s.initialFluid, s.params.restDensity,
-               includeBoundary);
+  appendSolids(b, *s.engine, s.objects.get(), s.externalSurface, s.initialFluid,
+               s.params.restDensity, includeBoundary);
   return std::move(b.out);
 }
 

@@ -69,7 +69,7 @@ inline nlohmann::json completeSceneJson() {
     "interaction": {"coupling": "boundary", "influence_ratio": 1.8, "distance_exponent": 3,
                     "stiffness": 12, "damping": 0.5, "shear": 0.1, "max_acceleration": 900,
                     "cut_aware_damping": false},
-    "object_engine": {"rate": 2, "own_thread": false},
+    "object_engine": {"type": "bullet", "rate": 2, "own_thread": false},
     "calibration": {"mass": 0.008, "max_expected_speed": 3.5, "speed_of_sound": 35,
                     "stiffness": 1.75e5},
     "time": {"duration": 2.5, "cfl": 0.3, "force_factor": 0.2, "viscous_factor": 0.1,
@@ -190,6 +190,7 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.interaction.shear, b.interaction.shear);
   EXPECT_EQ(a.interaction.maxAcceleration, b.interaction.maxAcceleration);
   EXPECT_EQ(a.interaction.cutAwareDamping, b.interaction.cutAwareDamping);
+  EXPECT_EQ(a.objectEngine.type, b.objectEngine.type);
   EXPECT_EQ(a.objectEngine.rate, b.objectEngine.rate);
   EXPECT_EQ(a.objectEngine.ownThread, b.objectEngine.ownThread);
   EXPECT_EQ(a.calibration.mass, b.calibration.mass);

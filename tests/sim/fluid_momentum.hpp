@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "sph/simulation.hpp"
 
@@ -15,6 +16,7 @@ inline std::array<double, 4> fluidMomentum(const Simulation& sim) {
   const ParticleFrame f = sim.frame(false);
   const double m = sim.calibration().mass;
   for (std::size_t i = 0; i < f.size(); ++i) {
+    if (f.kind[i] != std::uint8_t(ParticleKind::Fluid)) continue;  // an attached engine's objects
     double v2 = 0.0;
     for (int a = 0; a < 3; ++a) {
       out[a] += m * f.velocity[3 * i + a];
