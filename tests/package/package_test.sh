@@ -70,4 +70,11 @@ cmake --build "$consumer_build" || fail "building the consumer against the insta
 echo "-- running the consumer"
 "$consumer_build/consumer" || fail "the consumer ran but exited with status $?"
 
+if [ -f "$prefix/include/sph/bullet_engine.hpp" ]; then  # sph was built with its Bullet adapter
+  [ -x "$consumer_build/consumer_bullet" ] ||
+    fail "sph::bullet is installed but the consumer could not build against it"
+  echo "-- running the Bullet consumer"
+  "$consumer_build/consumer_bullet" || fail "the Bullet consumer ran but exited with status $?"
+fi
+
 echo "package test passed"
