@@ -33,6 +33,11 @@ class BulletEngine {
     double longestSubstep = 1e-3;  // s: a step of the fluid's is cut into Bullet substeps
     int leastSubsteps = 1;         // ... and into at least this many (2: Bullet at twice the
                                    // fluid's rate, when step() follows every fluid step)
+    // step() hands the world's step to a thread of the engine's own and returns at once; the
+    // fluid's next step waits for its publication where it reads the objects (after its density
+    // pass, with contact coupling), so the two overlap and the results are those of stepping
+    // one after the other.
+    bool ownThread = false;
   };
   explicit BulletEngine(const Settings& settings);
   // The bodies of a scene whose object_engine.type is "bullet", in its objects' order: rigid
@@ -94,6 +99,9 @@ class BulletEngine {
   // every substep while Bullet advances the world over the time they span, and publishes the
   // bodies where they now are. Does nothing while the fluid has not stepped.
   void step();
+  // Until the step handed to the engine's thread is done (at once without one); rethrows what
+  // that step threw. body() and time() wait first.
+  void wait() const;
 
   struct Body {
     Vec3d centre{0, 0, 0};    // m: of mass (a soft body's free nodes)

@@ -16,6 +16,7 @@
 //   exchange.publish();
 #pragma once
 
+#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <mutex>
@@ -58,13 +59,19 @@ class ObjectExchange {
   // last call; returns the time they span (s). When no fluid step was deposited since, gives
   // the previous mean again and returns 0.
   double takeForces(std::vector<Vec3>& forceByHandle);
+  // Lock-step with an engine in a thread of its own: having taken a step's forces, the engine
+  // announces the publication it will make of them, and the fluid's next readIfNew waits for
+  // it, so that each fluid step reads what the engine made of the one before, as if the two
+  // ran one after the other. announce(false) withdraws an announcement (an engine step failed).
+  void announce(bool coming = true);
 
   // --- the fluid's side ---
   // Calls read(const ObjectSurface&) on the newest publication, if it is newer than
   // `seenVersion`, and updates `seenVersion`. Returns whether it read one.
   template <class Read>
   bool readIfNew(std::uint64_t& seenVersion, Read&& read) {
-    std::lock_guard<std::mutex> lock(frontMutex_);
+    std::unique_lock<std::mutex> lock(frontMutex_);
+    published_.wait(lock, [&] { return !announced_; });
     if (version_ == seenVersion) return false;
     read(static_cast<const ObjectSurface&>(front_));
     seenVersion = version_;
@@ -91,6 +98,8 @@ class ObjectExchange {
   ObjectSurface front_;
   std::uint64_t version_ = 0;
   std::mutex frontMutex_;
+  bool announced_ = false;
+  std::condition_variable published_;
 
   std::vector<Vec3> impulse_;  // N·s, by handle, since the last take
   double span_ = 0.0;

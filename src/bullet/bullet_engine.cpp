@@ -7,10 +7,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <condition_variable>
 #include <cstdint>
+#include <exception>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include "soft_bodies.hpp"
@@ -232,6 +237,14 @@ struct BulletEngine::Impl {
         this, true);
   }
   ~Impl() {
+    if (worker.joinable()) {
+      {
+        std::lock_guard<std::mutex> lock(workMutex);
+        stopping = true;
+      }
+      workChanged.notify_all();
+      worker.join();
+    }
     for (Soft& f : softs) world.removeSoftBody(f.body.get());
     for (Free& f : bodies) world.removeRigidBody(f.body.get());
     for (auto& b : statics) world.removeRigidBody(b.get());
@@ -281,6 +294,57 @@ struct BulletEngine::Impl {
     objects.push_back({true, softs.size()});
     softs.push_back(std::move(f));
     return int(objects.size()) - 1;
+  }
+
+  // The world over `span` under the forces taken, then published.
+  void advance(double span) {
+    for (Free& f : bodies) {
+      btRigidBody& body = *f.body;
+      const btTransform& t = body.getWorldTransform();
+      btVector3 total(0, 0, 0), torque(0, 0, 0);
+      for (std::size_t k = 0; k < f.sampling.offset.size(); ++k) {
+        const Vec3& g = force[f.firstHandle + k];
+        const btVector3 fk(g.x, g.y, g.z);
+        total += fk;
+        torque += (t.getBasis() * f.sampling.offset[k]).cross(fk);
+      }
+      // Held over the whole step: Bullet clears them after its last substep.
+      body.applyCentralForce(total);
+      body.applyTorque(torque);
+    }
+    const int substeps =
+        std::max(settings.leastSubsteps, int(std::ceil(span / settings.longestSubstep - 1e-9)));
+    world.stepSimulation(btScalar(span), substeps, btScalar(span / substeps));
+    for (Soft& f : softs)
+      f.torn += bullet::tearOverstretchedLinks(*f.body, f.breakingStrain, f.cut);
+    time += span;
+    publish();
+  }
+
+  // Settings::ownThread: steps handed over by step(), one at a time.
+  std::thread worker;
+  std::mutex workMutex;
+  std::condition_variable workChanged;
+  bool pending = false, stopping = false;
+  double pendingSpan = 0.0;
+  std::exception_ptr error;
+
+  void work() {
+    std::unique_lock<std::mutex> lock(workMutex);
+    for (;;) {
+      workChanged.wait(lock, [&] { return pending || stopping; });
+      if (stopping) return;
+      lock.unlock();
+      try {
+        advance(pendingSpan);
+      } catch (...) {
+        error = std::current_exception();
+        exchange->announce(false);  // the fluid waits for nothing
+      }
+      lock.lock();
+      pending = false;
+      workChanged.notify_all();
+    }
   }
 
   void pushNodes() {
@@ -410,6 +474,7 @@ int BulletEngine::addCloth(const Vec3d& corner, const Vec3d& edgeU, const Vec3d&
 }
 
 void BulletEngine::setVelocity(int id, const Vec3d& velocity, const Vec3d& spin) {
+  wait();
   if (id < 0 || std::size_t(id) >= impl_->objects.size())
     throw std::out_of_range("BulletEngine::setVelocity: no body " + std::to_string(id));
   const Impl::Entry entry = impl_->objects[std::size_t(id)];
@@ -470,6 +535,8 @@ std::shared_ptr<ObjectExchange> BulletEngine::exchange() {
     if (impl_->objects.empty()) throw std::logic_error("BulletEngine: no body to exchange");
     impl_->exchange = std::make_shared<ObjectExchange>(impl_->handleCount);
     impl_->publish();
+    if (impl_->settings.ownThread)
+      impl_->worker = std::thread([impl = impl_.get()] { impl->work(); });
   }
   return impl_->exchange;
 }
@@ -477,32 +544,33 @@ std::shared_ptr<ObjectExchange> BulletEngine::exchange() {
 void BulletEngine::step() {
   Impl& s = *impl_;
   if (!s.exchange) throw std::logic_error("BulletEngine::step before exchange()");
+  wait();
+  // Taken here, in the caller's thread: the fluid's next step deposits the next forces.
   const double span = s.exchange->takeForces(s.force);
   if (span <= 0.0) return;
-  for (Impl::Free& f : s.bodies) {
-    btRigidBody& body = *f.body;
-    const btTransform& t = body.getWorldTransform();
-    btVector3 total(0, 0, 0), torque(0, 0, 0);
-    for (std::size_t k = 0; k < f.sampling.offset.size(); ++k) {
-      const Vec3& g = s.force[f.firstHandle + k];
-      const btVector3 fk(g.x, g.y, g.z);
-      total += fk;
-      torque += (t.getBasis() * f.sampling.offset[k]).cross(fk);
-    }
-    // Held over the whole step: Bullet clears them after its last substep.
-    body.applyCentralForce(total);
-    body.applyTorque(torque);
+  if (!s.settings.ownThread) {
+    s.advance(span);
+    return;
   }
-  const int substeps =
-      std::max(s.settings.leastSubsteps, int(std::ceil(span / s.settings.longestSubstep - 1e-9)));
-  s.world.stepSimulation(btScalar(span), substeps, btScalar(span / substeps));
-  for (Impl::Soft& f : s.softs)
-    f.torn += bullet::tearOverstretchedLinks(*f.body, f.breakingStrain, f.cut);
-  s.time += span;
-  s.publish();
+  s.exchange->announce();
+  {
+    std::lock_guard<std::mutex> lock(s.workMutex);
+    s.pendingSpan = span;
+    s.pending = true;
+  }
+  s.workChanged.notify_all();
+}
+
+void BulletEngine::wait() const {
+  Impl& s = *impl_;
+  if (!s.settings.ownThread) return;
+  std::unique_lock<std::mutex> lock(s.workMutex);
+  s.workChanged.wait(lock, [&] { return !s.pending; });
+  if (s.error) std::rethrow_exception(std::exchange(s.error, nullptr));
 }
 
 BulletEngine::Body BulletEngine::body(int id) const {
+  wait();
   if (id < 0 || std::size_t(id) >= impl_->objects.size())
     throw std::out_of_range("BulletEngine::body: no body " + std::to_string(id));
   const Impl::Entry entry = impl_->objects[std::size_t(id)];
@@ -540,6 +608,7 @@ std::size_t BulletEngine::bodyCount() const {
 }
 
 double BulletEngine::time() const {
+  wait();
   return impl_->time;
 }
 

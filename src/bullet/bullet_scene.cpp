@@ -1,5 +1,6 @@
 // A scene's objects as Bullet bodies (object_engine.type "bullet"), and its walls as the fixed
 // boxes they collide with: Bullet does not see the fluid's boundary particles.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -59,6 +60,10 @@ std::unique_ptr<BulletEngine> BulletEngine::forScene(const Scene& scene) {
   Settings settings;
   settings.spacing = scene.fluid.spacing;
   settings.gravity = scene.gravity;
+  settings.ownThread = scene.objectEngine.ownThread;
+  // Faster than the fluid: more Bullet steps a fluid step; slower: the caller steps Bullet
+  // after every 1/rate fluid steps (stepsBetween).
+  settings.leastSubsteps = std::max(1, int(std::lround(scene.objectEngine.rate)));
   auto engine = std::make_unique<BulletEngine>(settings);
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const ObjectDesc& object = scene.objects[o];

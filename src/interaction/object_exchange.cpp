@@ -45,9 +45,21 @@ void ObjectExchange::publish() {
       throw std::out_of_range("ObjectExchange::publish: object id " +
                               std::to_string(back_.object[k]) + " is negative");
   }
-  std::lock_guard<std::mutex> lock(frontMutex_);
-  std::swap(front_, back_);
-  ++version_;
+  {
+    std::lock_guard<std::mutex> lock(frontMutex_);
+    std::swap(front_, back_);
+    ++version_;
+    announced_ = false;
+  }
+  published_.notify_all();
+}
+
+void ObjectExchange::announce(bool coming) {
+  {
+    std::lock_guard<std::mutex> lock(frontMutex_);
+    announced_ = coming;
+  }
+  published_.notify_all();
 }
 
 double ObjectExchange::takeForces(std::vector<Vec3>& forceByHandle) {

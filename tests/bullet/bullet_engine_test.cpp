@@ -225,6 +225,30 @@ TEST(BulletEngine, AGraniteBallRestsOnTheFloor) {
   EXPECT_EQ(sim.fluidCount(), sim.calibration().fluidParticles);
 }
 
+// Bullet in a thread of its own, in lock-step with the fluid: the same bytes as stepping the
+// two one after the other.
+TEST(BulletEngine, InItsOwnThreadTheRunIsTheSameAsInline) {
+  const Scene scene = tank();
+  const auto run = [&](bool ownThread) {
+    Simulation sim(scene);
+    BulletEngine::Settings s = settings(scene);
+    s.ownThread = ownThread;
+    BulletEngine engine(s);
+    engine.addBox({0.05, 0.03, 0.05}, {0.1, 0.2, 0.08}, 500.0);
+    engine.addSoftBall(0.04, {0.22, 0.2, 0.08}, 0.1, {});
+    sim.attachObjectEngine(engine.exchange());
+    while (sim.time() < (kSanitized ? 0.01 : 0.15)) {
+      sim.step();
+      engine.step();
+    }
+    engine.wait();
+    return std::make_pair(sim.frame(false).position, engine.body(1).centre);
+  };
+  const auto inline_ = run(false), threaded = run(true);
+  EXPECT_EQ(inline_.first, threaded.first) << "the fluid's positions differ";
+  EXPECT_EQ(inline_.second, threaded.second) << "the ball's centre differs";
+}
+
 TEST(BulletEngine, MisuseIsRefused) {
   BulletEngine engine({});
   EXPECT_THROW(engine.exchange(), std::logic_error);  // nothing to exchange
