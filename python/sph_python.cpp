@@ -187,7 +187,11 @@ class FluidArrays {
     if (!view_) {
       copy_ = sim().frame(false);
       copied_ = true;
-      view_.count = copy_.size();
+      // The fluid comes first in a frame; an attached engine's objects follow it.
+      std::size_t fluid = 0;
+      while (fluid < copy_.size() && copy_.kind[fluid] == std::uint8_t(sph::ParticleKind::Fluid))
+        ++fluid;
+      view_.count = fluid;
       view_.step = copy_.step;
     }
   }
@@ -217,6 +221,13 @@ class FluidArrays {
   py::array pressure(py::handle self) const {
     check();
     return flat(copied_ ? copy_.pressure.data() : view_.pressure, self);
+  }
+  // Every row is a fluid particle's: 0 (a frame's kind), one byte shared by all rows.
+  py::array kind(py::handle self) const {
+    check();
+    static const std::uint8_t fluid = std::uint8_t(sph::ParticleKind::Fluid);
+    return readOnly(
+        py::array_t<std::uint8_t>({py::ssize_t(view_.count)}, {py::ssize_t(0)}, &fluid, self));
   }
 
  private:
@@ -352,9 +363,11 @@ PYBIND11_MODULE(_sph, m) {
           [](py::object self) { return self.cast<const FluidArrays&>().velocity(self); })
       .def_property_readonly(
           "density", [](py::object self) { return self.cast<const FluidArrays&>().density(self); })
-      .def_property_readonly("pressure", [](py::object self) {
-        return self.cast<const FluidArrays&>().pressure(self);
-      });
+      .def_property_readonly(
+          "pressure",
+          [](py::object self) { return self.cast<const FluidArrays&>().pressure(self); })
+      .def_property_readonly(
+          "kind", [](py::object self) { return self.cast<const FluidArrays&>().kind(self); });
 
   py::class_<sph::Scene>(m, "Scene", "A checked scene: read with load_scene or scene_from_dict.")
       .def_property_readonly("source", [](const sph::Scene& s) { return s.sourcePath; })

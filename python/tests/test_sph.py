@@ -98,6 +98,7 @@ def test_a_view_reads_the_simulation_in_place_and_refuses_after_a_step():
     np.testing.assert_array_equal(view.velocity[order], frame["velocity"])
     np.testing.assert_array_equal(view.density[order], frame["density"])
     np.testing.assert_array_equal(view.pressure[order], frame["pressure"])
+    np.testing.assert_array_equal(view.kind, frame["kind"])  # every row the fluid's
     before = position.copy()
     sim.step()
     assert not np.array_equal(position, before)  # an array kept sees the simulation move on
