@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "soft_bodies.hpp"
+#include "sph/core/constants.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph {
@@ -413,14 +414,12 @@ int BulletEngine::addBox(const Vec3d& halfExtents, const Vec3d& centre, double d
 }
 
 int BulletEngine::addSphere(double radius, const Vec3d& centre, double density) {
-  constexpr double kPi = 3.14159265358979323846;
   return impl_->add(std::make_unique<btSphereShape>(btScalar(radius)),
                     sampleSphere(radius, impl_->settings.spacing), centre, density,
                     4.0 / 3.0 * kPi * radius * radius * radius);
 }
 
 int BulletEngine::addCapsule(double radius, double length, const Vec3d& centre, double density) {
-  constexpr double kPi = 3.14159265358979323846;
   return impl_->add(std::make_unique<btCapsuleShape>(btScalar(radius), btScalar(length)),
                     sampleCapsule(radius, length, impl_->settings.spacing), centre, density,
                     kPi * radius * radius * (length + 4.0 / 3.0 * radius));

@@ -9,6 +9,7 @@
 
 #include "objects/mesh.hpp"
 #include "sph/bullet_engine.hpp"
+#include "sph/core/constants.hpp"
 #include "sph/error.hpp"
 
 namespace sph {
@@ -110,8 +111,7 @@ std::unique_ptr<BulletEngine> BulletEngine::forScene(const Scene& scene) {
       // A ball that tears has nothing to keep its volume with (soft_bodies.cpp).
       material.volumeStiffness = d.breakingStrain > 0.0 ? 0.0 : 0.5;
       material.bendingStiffness = 0.2;
-      const double pi = 3.14159265358979323846;
-      const double mass = object.density * 4.0 * pi * shape.radius * shape.radius *
+      const double mass = object.density * 4.0 * kPi * shape.radius * shape.radius *
                           scene.fluid.spacing;  // a surface layer a spacing thick
       id = engine->addSoftBall(shape.radius, shape.center, mass, material);
       for (const AxisBox& box : d.pinned) engine->pinNodes(id, box);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -74,11 +75,11 @@ std::unique_ptr<btSoftBody> makeSoftBall(btSoftBodyWorldInfo& world, double radi
   for (const btVector3& u : unit) x.push_back(centre + u * btScalar(radius));
   const std::vector<btScalar> m(x.size(), btScalar(mass / double(x.size())));
   auto body = std::make_unique<btSoftBody>(&world, int(x.size()), x.data(), m.data());
-  std::map<std::pair<int, int>, bool> linked;
+  std::set<std::pair<int, int>> linked;
   for (const Triangle& f : face) {
     for (int k = 0; k < 3; ++k) {
       const auto edge = std::minmax(f[k], f[(k + 1) % 3]);
-      if (linked.emplace(edge, true).second) body->appendLink(edge.first, edge.second);
+      if (linked.insert(edge).second) body->appendLink(edge.first, edge.second);
     }
     body->appendFace(f[0], f[1], f[2]);
   }

@@ -6,19 +6,17 @@
 #include <stdexcept>
 #include <string>
 
+#include "bullet_test_support.hpp"
 #include "io/scene_loader.hpp"
 #include "sph/bullet_engine.hpp"
+#include "sph/core/constants.hpp"
 #include "sph/error.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph {
 namespace {
 
-#ifdef SPH_TESTS_SANITIZED
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
+using testing::kSanitized;
 
 Scene shippedScene() {
   return io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/bullet_bodies.json");
@@ -35,7 +33,7 @@ TEST(BulletScene, TheShippedSceneFallsIntoTheWater) {
   ASSERT_EQ(engine->bodyCount(), 3u);
   EXPECT_NEAR(engine->body(0).mass, 500.0 * 0.12 * 0.08 * 0.10, 1e-9);
   EXPECT_NEAR(engine->body(1).mass, 750.0 * 0.10 * 0.06 * 0.10, 1e-9);
-  EXPECT_NEAR(engine->body(2).mass, 1000.0 * 4.0 * M_PI * 0.05 * 0.05 * 0.01, 1e-6);
+  EXPECT_NEAR(engine->body(2).mass, 1000.0 * 4.0 * kPi * 0.05 * 0.05 * 0.01, 1e-6);
   EXPECT_TRUE(engine->body(2).soft);
   engine->attachTo(sim);
   const double start = engine->body(0).centre[1];
