@@ -6,10 +6,6 @@
 
 namespace sph::io {
 
-AxisBox readBox(const ObjectReader& in) {
-  return {in.requiredVec3("min"), in.requiredVec3("max")};
-}
-
 double lengthOf(const Vec3d& v) {
   return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }

@@ -10,8 +10,6 @@
 
 namespace sph::io {
 
-AxisBox readBox(const ObjectReader& in);  // "min" and "max", both required
-
 // The names of `items` (the scene's array `list` of `what`s): no commas or quotes (they head
 // columns and keys of the outputs), none twice.
 template <class Desc>

@@ -9,45 +9,6 @@
 namespace sph::io {
 namespace {
 
-// A key of the other shape is a mistake, not something to ignore.
-void refuseOtherShapesKeys(const ObjectReader& in, EmitterShape shape) {
-  const char* const disc[] = {"center", "radius", "direction"};
-  const char* const rectangle[] = {"corner", "edge1", "edge2"};
-  const auto& others = shape == EmitterShape::Disc ? rectangle : disc;
-  for (const char* key : others) {
-    if (!in.has(key)) continue;
-    in.context().fail(
-        in.keyPath(key),
-        std::string("not a key of a ") + nameOf(shape, kEmitterShapeNames) +
-            " emitter; its keys are name, shape, speed, start, end, " +
-            (shape == EmitterShape::Disc ? "center, radius, direction" : "corner, edge1, edge2"));
-  }
-}
-
-EmitterDesc readEmitter(const ObjectReader& in, std::size_t index) {
-  EmitterDesc e;
-  e.name = in.string("name", "emitter" + std::to_string(index));
-  e.shape = in.choice("shape", e.shape, kEmitterShapeNames);
-  refuseOtherShapesKeys(in, e.shape);
-  if (e.shape == EmitterShape::Disc) {
-    e.center = in.requiredVec3("center");
-    if (!in.has("radius"))
-      in.context().fail(in.keyPath("radius"), "required key is missing (a length in m)");
-    e.radius = in.number("radius", e.radius, kPositive);
-    e.direction = in.requiredVec3("direction");
-  } else {
-    e.corner = in.requiredVec3("corner");
-    e.edge1 = in.requiredVec3("edge1");
-    e.edge2 = in.requiredVec3("edge2");
-  }
-  if (!in.has("speed"))
-    in.context().fail(in.keyPath("speed"), "required key is missing (a speed in m/s)");
-  e.speed = in.number("speed", e.speed, kSpeed);
-  e.start = in.number("start", e.start, kNonNegative);
-  e.end = in.number("end", e.end, kPositive);
-  return e;
-}
-
 void checkEmitter(const ReadContext& context, const EmitterDesc& e, const std::string& path,
                   const Scene& scene) {
   const double spacing = scene.fluid.spacing;
@@ -76,26 +37,6 @@ void checkEmitter(const ReadContext& context, const EmitterDesc& e, const std::s
 }
 
 }  // namespace
-
-std::vector<EmitterDesc> readEmitters(const ObjectReader& root) {
-  std::vector<EmitterDesc> emitters;
-  for (const ObjectReader& in : root.objectArray("emitters", /*required=*/false,
-                                                 /*nonEmpty=*/false))
-    emitters.push_back(readEmitter(in, emitters.size()));
-  return emitters;
-}
-
-std::vector<OutletDesc> readOutlets(const ObjectReader& root) {
-  std::vector<OutletDesc> outlets;
-  for (const ObjectReader& in : root.objectArray("outlets", /*required=*/false,
-                                                 /*nonEmpty=*/false)) {
-    OutletDesc o;
-    o.name = in.string("name", "outlet" + std::to_string(outlets.size()));
-    o.box = readBox(in);
-    outlets.push_back(o);
-  }
-  return outlets;
-}
 
 void checkFlow(const ReadContext& context, const Scene& scene) {
   if (scene.emitters.size() > kMaxEmitters)

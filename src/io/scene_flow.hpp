@@ -1,4 +1,4 @@
-// The scene's flow in and out: "emitters" and "outlets" read and checked.
+// The scene's flow in and out: "emitters" and "outlets" checked (scene_keys.cpp reads them).
 #pragma once
 
 #include <vector>
@@ -8,8 +8,6 @@
 
 namespace sph::io {
 
-std::vector<EmitterDesc> readEmitters(const ObjectReader& root);
-std::vector<OutletDesc> readOutlets(const ObjectReader& root);
 // Names unique and plain, shapes inside the domain and at least a spacing across, times in
 // order, no more than kMaxEmitters and kMaxOutlets.
 void checkFlow(const ReadContext& context, const Scene& scene);

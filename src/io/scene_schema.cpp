@@ -1,84 +1,12 @@
 #include "io/scene_schema.hpp"
 
+#include "io/scene_keys.hpp"
+
 #include <algorithm>
 #include <utility>
 
 namespace sph::io {
 namespace {
-
-using Shape = KeySchema::Shape;
-
-KeySchema value(std::string name) {
-  return {std::move(name), Shape::Value, {}};
-}
-
-KeySchema object(std::string name, std::vector<KeySchema> keys) {
-  return {std::move(name), Shape::Object, std::move(keys)};
-}
-
-KeySchema vec3(std::string name) {
-  return {std::move(name), Shape::Array, {value("[]")}};
-}
-
-KeySchema arrayOf(std::string name, std::vector<KeySchema> elementKeys) {
-  return {std::move(name), Shape::Array, {object("[]", std::move(elementKeys))}};
-}
-
-KeySchema buildSchema() {
-  return object(
-      "",
-      {value("name"), value("description"),
-       object("domain", {vec3("min"), vec3("max"), value("outside"), value("damped_box"),
-                         value("damping"), value("periodic")}),
-       vec3("gravity"),
-       object("fluid",
-              {value("rest_density"), value("spacing"), value("support_ratio"), value("solver"),
-               object("dfsph",
-                      {value("density_tolerance"), value("divergence_tolerance"),
-                       value("min_iterations"), value("max_iterations"), value("warm_start"),
-                       value("divergence_solve"), value("density_solve"), value("force_factor")}),
-               value("kernel"), value("eos"), value("clamp_negative_pressure"),
-               value("pressure_form"), value("density"), value("density_diffusion"),
-               object("viscosity", {value("model"), value("value"), value("wall_friction")}),
-               object("surface_tension", {value("coefficient"), value("threshold")}),
-               arrayOf("blocks", {vec3("min"), vec3("max"), vec3("velocity"), value("hydrostatic"),
-                                  value("inside"), vec3("angular_velocity")})}),
-       arrayOf("walls",
-               {value("name"), value("type"), value("layers"), vec3("min"), vec3("max"),
-                value("closed"), value("fluid"), vec3("center"), value("radius"), value("length"),
-                vec3("axis"), value("capped"), vec3("corner"), vec3("edge1"), vec3("edge2"),
-                value("file"), value("scale"), value("open")}),
-       arrayOf("objects",
-               {value("name"), value("motion"),
-                object("shape", {value("type"), vec3("center"), vec3("half_extents"),
-                                 value("radius"), value("length"), vec3("axis"), value("capped"),
-                                 value("file"), value("scale"), value("solid"), value("layers")}),
-                value("density"), value("spacing"), vec3("velocity"), vec3("angular_velocity"),
-                object("deformable",
-                       {value("stiffness"), value("damping"), value("breaking_strain"),
-                        value("spring_reach"), arrayOf("pinned", {vec3("min"), vec3("max")}),
-                        arrayOf("cuts", {vec3("min"), vec3("max")}), value("model"),
-                        value("substeps"), value("bending_stiffness")}),
-                arrayOf("keyframes", {value("time"), vec3("offset"), vec3("rotation")})}),
-       object("interaction",
-              {value("coupling"), value("influence_ratio"), value("distance_exponent"),
-               value("stiffness"), value("damping"), value("shear"), value("max_acceleration"),
-               value("cut_aware_damping")}),
-       object("object_engine", {value("type"), value("rate"), value("own_thread")}),
-       object("calibration", {value("mass"), value("max_expected_speed"), value("speed_of_sound"),
-                              value("stiffness")}),
-       object("time", {value("duration"), value("cfl"), value("force_factor"),
-                       value("viscous_factor"), value("max_dt"), value("fixed_dt")}),
-       object("output", {value("fps"), value("format"), value("probe_rate")}),
-       arrayOf("probes", {value("name"), value("type"), vec3("position"), vec3("from"), vec3("to"),
-                          value("object"), value("wall")}),
-       arrayOf("emitters", {value("name"), value("shape"), vec3("center"), value("radius"),
-                            vec3("direction"), vec3("corner"), vec3("edge1"), vec3("edge2"),
-                            value("speed"), value("start"), value("end")}),
-       arrayOf("outlets", {value("name"), vec3("min"), vec3("max")}),
-       object("failure", {value("max_density_error")}),
-       object("limits", {value("max_particles"), value("max_memory_gb")})});
-}
 
 // Optimal string alignment distance: insertions, deletions, substitutions and swaps of two
 // neighbouring characters each cost 1, so "sapcing" is as close to "spacing" as "spacng".
@@ -118,7 +46,7 @@ const KeySchema& KeySchema::child(const std::string& key) const {
 }
 
 const KeySchema& sceneSchema() {
-  static const KeySchema schema = buildSchema();
+  static const KeySchema schema = schemaOf("", sceneKeys());
   return schema;
 }
 
@@ -163,31 +91,6 @@ std::string unknownKeyText(const std::string& parentPath, const std::string& key
     text += (i == 0 ? "" : ", ") + level.children[i].name;
   }
   return text + ")";
-}
-
-const std::vector<std::string>& wallKeys(WallKind kind) {
-  static const std::vector<std::string> tank{"min", "max", "closed"};
-  static const std::vector<std::string> box{"min", "max", "fluid"};
-  static const std::vector<std::string> sphere{"center", "radius", "fluid"};
-  static const std::vector<std::string> cylinder{"center", "radius", "length",
-                                                 "axis",   "capped", "fluid"};
-  static const std::vector<std::string> plane{"corner", "edge1", "edge2"};
-  static const std::vector<std::string> mesh{"file", "center", "scale", "open"};
-  switch (kind) {
-    case WallKind::Tank:
-      return tank;
-    case WallKind::Box:
-      return box;
-    case WallKind::Sphere:
-      return sphere;
-    case WallKind::Cylinder:
-      return cylinder;
-    case WallKind::Plane:
-      return plane;
-    case WallKind::Mesh:
-      break;
-  }
-  return mesh;
 }
 
 }  // namespace sph::io

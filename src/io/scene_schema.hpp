@@ -1,4 +1,5 @@
-// The keys a scene file may hold, as a tree, and the names its enumerations are written with.
+// The keys a scene file may hold, as a tree made of their declarations (scene_keys.cpp), and the
+// names its enumerations are written with.
 // The loader checks documents and `--set` overrides against this tree; the writer uses the
 // same names, so that what it writes reads back.
 #pragma once
@@ -98,9 +99,6 @@ inline constexpr NamedValue<ShapeKind> kShapeNames[] = {{"box", ShapeKind::Box},
                                                         {"capsule", ShapeKind::Capsule},
                                                         {"tube", ShapeKind::Tube},
                                                         {"mesh", ShapeKind::Mesh}};
-
-// The keys each type of wall reads, besides "type" and "layers"; the others are refused.
-const std::vector<std::string>& wallKeys(WallKind kind);
 
 template <class Enum, std::size_t N>
 const char* nameOf(Enum value, const NamedValue<Enum> (&names)[N]) {

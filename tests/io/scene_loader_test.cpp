@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -268,14 +269,19 @@ TEST(SceneJson, RoundTripsValuesThatNeedEveryDigit) {
   expectScenesEqual(parseScene(sceneToJson(original), kSource), original);
 }
 
-// Every key of the schema is written, in every object and every array element; a wall, which
-// reads only the keys of its type, with those.
+// Every key of the schema is written, in every object and every array element; a wall, a probe
+// and an emitter, which read only the keys of their type, with those.
 void expectEveryKey(const json& value, const KeySchema& schema, const std::string& path) {
   if (schema.shape == KeySchema::Shape::Object && path.rfind("walls[", 0) == 0) {
     ASSERT_TRUE(value.is_object() && value.contains("type")) << path;
-    std::vector<std::string> keys;
-    for (const auto& named : kWallKindNames)
-      if (value["type"] == named.name) keys = wallKeys(named.value);
+    const std::map<std::string, std::vector<std::string>> byType{
+        {"tank", {"min", "max", "closed"}},
+        {"box", {"min", "max", "fluid"}},
+        {"sphere", {"center", "radius", "fluid"}},
+        {"cylinder", {"center", "radius", "length", "axis", "capped", "fluid"}},
+        {"plane", {"corner", "edge1", "edge2"}},
+        {"mesh", {"file", "center", "scale", "open"}}};
+    std::vector<std::string> keys = byType.at(value["type"].get<std::string>());
     keys.insert(keys.end(), {"name", "type", "layers"});
     for (const std::string& key : keys)
       EXPECT_TRUE(value.contains(key)) << joinKey(path, key) << " is not written";
@@ -290,6 +296,15 @@ void expectEveryKey(const json& value, const KeySchema& schema, const std::strin
     for (const std::string& key : keys)
       EXPECT_TRUE(value.contains(key)) << joinKey(path, key) << " is not written";
     EXPECT_EQ(value.size(), keys.size()) << path << " has keys of the other shape";
+  } else if (schema.shape == KeySchema::Shape::Object && path.rfind("probes[", 0) == 0) {
+    ASSERT_TRUE(value.is_object() && value.contains("type")) << path;
+    const std::map<std::string, std::vector<std::string>> byType{
+        {"point", {"position"}}, {"level", {"from", "to"}}, {"force", {"object", "wall"}}};
+    std::vector<std::string> keys = byType.at(value["type"].get<std::string>());
+    keys.insert(keys.end(), {"name", "type"});
+    for (const std::string& key : keys)
+      EXPECT_TRUE(value.contains(key)) << joinKey(path, key) << " is not written";
+    EXPECT_EQ(value.size(), keys.size()) << path << " has keys of another type of probe";
   } else if (schema.shape == KeySchema::Shape::Object) {
     ASSERT_TRUE(value.is_object()) << path;
     for (const KeySchema& key : schema.children) {
