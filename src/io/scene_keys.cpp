@@ -169,7 +169,8 @@ const SceneKeys<WallDesc>& wallKeys() {
                 if (w.meshFile.empty())
                   in.context().fail(in.keyPath("file"), "expected the path of an OBJ or STL file");
               },
-              [](const WallDesc& w) { return json(w.meshFile); })
+              [](const WallDesc& w) { return json(w.meshFile); },
+              requiredSchema(valueSchema("file")))
               .only(only({K::Mesh})),
           requiredVec3("center", at(&WallDesc::center)).only(only({K::Sphere, K::Cylinder})),
           vec3("center", at(&WallDesc::center)).only(only({K::Mesh})),

@@ -126,6 +126,11 @@ inline KeySchema vec3Schema(const std::string& name) {
   return {name, KeySchema::Shape::Array, {valueSchema("[]")}};
 }
 
+inline KeySchema requiredSchema(KeySchema schema) {
+  schema.required = true;
+  return schema;
+}
+
 // --- Values -------------------------------------------------------------------------------
 
 template <class Desc>
@@ -148,7 +153,7 @@ SceneKey<Desc> requiredNumber(const std::string& name, Field<Desc, double> f, Nu
             f.get(d) = in.number(name, f.get(d), rule);
           },
           [=](const Desc& d, nlohmann::json& out) { out[name] = f.read(d); },
-          valueSchema(name),
+          requiredSchema(valueSchema(name)),
           {}};
 }
 
@@ -210,7 +215,7 @@ SceneKey<Desc> requiredVec3(const std::string& name, Field<Desc, Vec3d> f,
   return {name,
           [=](const ObjectReader& in, Desc& d) { f.get(d) = in.requiredVec3(name, largest); },
           [=](const Desc& d, nlohmann::json& out) { out[name] = f.read(d); },
-          vec3Schema(name),
+          requiredSchema(vec3Schema(name)),
           {}};
 }
 

@@ -22,6 +22,7 @@ struct KeySchema {
   std::string name;
   Shape shape = Shape::Value;
   std::vector<KeySchema> children;
+  bool required = false;  // no default: a scene must give it
 
   const KeySchema* find(const std::string& key) const;
   // A key the loader reads must be in the schema: a miss here is a bug, not bad input.
