@@ -212,6 +212,9 @@ struct OutletDesc {
 
 struct FailureDesc {
   double maxDensityError = 0.5;  // compression ρ/ρ0 - 1 past which the run stops as failed
+  // m/s: a particle faster stops the run as failed; unset: ten times the speed of sound (ten
+  // times the largest expected speed under DFSPH), which only a blow-up reaches.
+  std::optional<double> maxSpeed;
 };
 
 // What a scene may make, checked before anything is: beyond them it is refused (0: no bound

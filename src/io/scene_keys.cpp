@@ -374,6 +374,7 @@ const SceneKeys<OutletDesc>& outletKeys() {
 const SceneKeys<FailureDesc>& failureKeys() {
   static const SceneKeys<FailureDesc> keys{{
       number("max_density_error", at(&FailureDesc::maxDensityError), kPositive),
+      optionalNumber("max_speed", at(&FailureDesc::maxSpeed), kSpeed),
   }};
   return keys;
 }

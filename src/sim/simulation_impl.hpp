@@ -447,10 +447,11 @@ struct Simulation::Impl {
     const fluid::StepMeasures m = engine->measureStep();
     const float bound = static_cast<float>(scene.failure.maxDensityError);
     if (!m.finite || m.maxDensityError > bound) fail(bound);
-    // Ten times the speed of sound, or no fluid left at all: a blow-up the density bound did
-    // not catch (a fixed step too long for the stiffness), not a result.
-    const double speedLimit =
-        10.0 * std::max(calibration.soundSpeed, 10.0 * calibration.maxExpectedSpeed);
+    // Past the scene's bound, by default ten times the speed of sound, or no fluid left at all:
+    // a blow-up the density bound did not catch (a fixed step too long for the stiffness), not
+    // a result.
+    const double speedLimit = scene.failure.maxSpeed.value_or(
+        10.0 * std::max(calibration.soundSpeed, 10.0 * calibration.maxExpectedSpeed));
     // A scene with flow in or out may run empty.
     const bool flows = !scene.emitters.empty() || !scene.outlets.empty();
     if (m.maxSpeed > speedLimit || (engine->fluidCount() == 0 && initialFluid > 0 && !flows))
@@ -505,7 +506,9 @@ struct Simulation::Impl {
       if (lengthSquared(xyz(fluid.velocity[i])) > lengthSquared(xyz(fluid.velocity[fastest])))
         fastest = i;
     message << "particle " << fluid.id[fastest] << ": speed = " << m.maxSpeed
-            << " m/s, past ten times the speed of sound (" << speedLimit << " m/s)";
+            << (scene.failure.maxSpeed ? " m/s, past failure.max_speed ("
+                                       : " m/s, past ten times the speed of sound (")
+            << speedLimit << " m/s)";
     throw SimulationFailure(message.str(), steps, fluid.id[fastest], "speed");
   }
   [[noreturn]] void fail(float bound) {

@@ -164,6 +164,7 @@ TEST(SceneErrors, ValuesOutOfRange) {
        "output.format: expected one of \"vtp\", \"ply\", \"csv\", "
        "\"none\", got \"vtk\""},
       {"/failure/max_density_error", -0.1, "failure.max_density_error: expected a positive"},
+      {"/failure/max_speed", 0, "failure.max_speed: expected a number in (0, 10000] or null"},
       {"/limits/max_particles", -1, "limits.max_particles: expected a non-negative number"},
       // Values past any physical scene, that once failed at step 0 (exit 3) or hung.
       {"/fluid/rest_density", 1e300, "fluid.rest_density: expected a number in [0.001, 100000]"},

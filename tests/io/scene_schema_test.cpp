@@ -40,7 +40,7 @@ TEST(SceneSchema, UnknownKeyText) {
   EXPECT_EQ(unknownKeyText("fluid", "viscosty", level("fluid")),
             "unknown key fluid.viscosty (did you mean fluid.viscosity?)");
   EXPECT_EQ(unknownKeyText("failure", "limit", level("failure")),
-            "unknown key failure.limit (keys of failure are: max_density_error)");
+            "unknown key failure.limit (keys of failure are: max_density_error, max_speed)");
 }
 
 TEST(SceneSchema, KeyPaths) {

@@ -84,7 +84,7 @@ inline nlohmann::json completeSceneJson() {
                  {"name": "inlet", "shape": "rectangle", "corner": [0, 0.1, -0.1],
                   "edge1": [0, 0.2, 0], "edge2": [0, 0, 0.2], "speed": 0.25}],
     "outlets": [{"name": "drain", "min": [1.2, 0, -0.15], "max": [1.4, 0.1, 0.25]}],
-    "failure": {"max_density_error": 0.2},
+    "failure": {"max_density_error": 0.2, "max_speed": 12},
     "limits": {"max_particles": 2e6, "max_memory_gb": 4}
   })");
 }

@@ -2,6 +2,7 @@
 // good state.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -56,6 +57,33 @@ TEST(Failure, RunawaySpeedStopsTheRunNamingTheFastestParticle) {
     EXPECT_LT(failure.particleId(), sim.calibration().fluidParticles);
   }
   EXPECT_LE(sim.stepCount(), 5u);
+}
+
+// failure.max_speed: a scene's own bound on speed stops a run that the default (ten times the
+// speed of sound) would let go on. A column 0.1 m high collapsing across a tank three times as
+// wide reaches 1 m/s within 0.1 s.
+TEST(Failure, ASpeedPastTheScenesBoundStopsTheRun) {
+  Scene scene = testing::restingTank(0.01, 0.3, 0.1);
+  scene.fluid.blocks[0].box.max = {0.1, 0.1, 0.1};
+  scene.failure.maxSpeed = 0.5;
+  Simulation sim(scene);
+  try {
+    sim.advanceTo(0.1);
+    FAIL() << "the column's fall passes 0.5 m/s";
+  } catch (const SimulationFailure& failure) {
+    EXPECT_EQ(failure.quantity(), "speed");
+    const std::string message = failure.what();
+    EXPECT_NE(message.find("past failure.max_speed (0.5 m/s)"), std::string::npos) << message;
+  }
+  EXPECT_GT(sim.time(), 0.0);
+  const ParticleFrame frame = sim.frame(false);
+  float fastest = 0.0f;
+  for (std::size_t i = 0; i < frame.size(); ++i)
+    fastest = std::max(fastest, std::hypot(frame.velocity[3 * i], frame.velocity[3 * i + 1],
+                                           frame.velocity[3 * i + 2]));
+  // The run stopped at the first step that found a particle past the bound, and kept that state.
+  EXPECT_GT(fastest, 0.5f);
+  EXPECT_LT(fastest, 0.55f);
 }
 
 // --set fluid.spacing=0.0001 on the dam break once grew to 4.6 GB and ended in bad_alloc.
