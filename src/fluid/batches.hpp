@@ -14,6 +14,7 @@
 
 #include "backend/cpu_backend.hpp"
 #include "fluid/neighbors.hpp"
+#include "fluid/pair_terms.hpp"
 #include "fluid/particles.hpp"
 #include "sph/core/select.hpp"
 
@@ -168,6 +169,38 @@ SPH_BATCH_INLINE void forEachWallBatch(const WallCells& walls, Vec3 x, Visit&& v
   forEachNeighborRange(walls.spec, walls.cellStart, x, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t b = begin; b < end; b += kBatch) visit(b, lane < FloatBatch(float(end - b)));
   });
+}
+
+// What a batched pass reads of boundary particles (walls, or objects' surfaces): their cells and
+// their positions and volumes as columns. Pointers, so that a pass's lambda copies it.
+struct BoundaryBatches {
+  WallCells cells;
+  const float* x;
+  const float* y;
+  const float* z;
+  const float* volume;
+};
+
+inline BoundaryBatches boundaryBatches(const BoundaryParticles<CpuBackend>& boundary) {
+  return {wallCells(boundary), boundary.batchX.data(), boundary.batchY.data(),
+          boundary.batchZ.data(), boundary.batchVolume.data()};
+}
+
+// The boundary particles within reach of x_i, a batch at a time: visit(pair, volume, b) for each
+// batch with one in reach, `pair` their separation from x_i (none at x_i itself), `volume`
+// theirs.
+template <class Visit>
+SPH_BATCH_INLINE void forEachBoundaryPairBatch(const BoundaryBatches& boundary, Vec3 x,
+                                               const BatchVec3& xi, float h2, Visit&& visit) {
+  const FloatBatch h2Batch(h2), zero(0.0f);
+  forEachWallBatch(boundary.cells, x,
+                   [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
+                     const BatchVec3 rib = xi - loadBatch(boundary.x, boundary.y, boundary.z, b);
+                     const FloatBatch r2 = dot(rib, rib);
+                     const auto near = candidates && r2 < h2Batch && r2 > zero;
+                     if (stdx::none_of(near)) return;
+                     visit(makePair(rib, r2, near, h2), loadBatch(boundary.volume, b), b);
+                   });
 }
 
 }  // namespace sph::fluid::detail

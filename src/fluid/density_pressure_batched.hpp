@@ -36,16 +36,8 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
 
   const GridSpec spec = grid.spec;
   const std::uint32_t* cellStart = grid.cellStart.data();
-  const WallCells walls = wallCells(boundary);
-  const float* wx = boundary.batchX.data();
-  const float* wy = boundary.batchY.data();
-  const float* wz = boundary.batchZ.data();
-  const float* wv = boundary.batchVolume.data();
-  const WallCells objectCells = wallCells(objects);
-  const float* ox = objects.batchX.data();
-  const float* oy = objects.batchY.data();
-  const float* oz = objects.batchZ.data();
-  const float* ov = objects.batchVolume.data();
+  const BoundaryBatches walls = boundaryBatches(boundary);
+  const BoundaryBatches objectWalls = boundaryBatches(objects);
   float* density = fluid.density.data();
   float* pressure = fluid.pressure.data();
   Vec4* state = fluid.pressureState.data();
@@ -101,16 +93,18 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
     } else {
       neighborCount[i] = kNeighborOverflow;  // the passes after this search the cells
     }
-    forEachWallBatch(walls, xs, [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
-      const BatchVec3 rib = xi - loadBatch(wx, wy, wz, b);
-      const FloatBatch r2 = dot(rib, rib);
-      wallSum += loadBatch(wv, b) * kernelWhere(kernels, r2, candidates && r2 < h2);
-    });
     forEachWallBatch(
-        objectCells, xs, [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
-          const BatchVec3 rib = xi - loadBatch(ox, oy, oz, b);
+        walls.cells, xs, [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
+          const BatchVec3 rib = xi - loadBatch(walls.x, walls.y, walls.z, b);
           const FloatBatch r2 = dot(rib, rib);
-          wallSum += loadBatch(ov, b) * kernelWhere(kernels, r2, candidates && r2 < h2);
+          wallSum += loadBatch(walls.volume, b) * kernelWhere(kernels, r2, candidates && r2 < h2);
+        });
+    forEachWallBatch(
+        objectWalls.cells, xs, [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
+          const BatchVec3 rib = xi - loadBatch(objectWalls.x, objectWalls.y, objectWalls.z, b);
+          const FloatBatch r2 = dot(rib, rib);
+          wallSum +=
+              loadBatch(objectWalls.volume, b) * kernelWhere(kernels, r2, candidates && r2 < h2);
         });
     const PressureState s = pressureStateFromDensity(
         integrated

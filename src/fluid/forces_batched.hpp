@@ -60,11 +60,7 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
   });
 
   const NeighborLists lists = neighborLists(fluid, grid);
-  const WallCells walls = wallCells(boundary);
-  const float* wx = boundary.batchX.data();
-  const float* wy = boundary.batchY.data();
-  const float* wz = boundary.batchZ.data();
-  const float* wv = boundary.batchVolume.data();
+  const BoundaryBatches walls = boundaryBatches(boundary);
   const Vec4* state = fluid.pressureState.data();
   Vec4* acceleration = fluid.acceleration.data();
   const std::uint32_t* id = fluid.id.data();
@@ -102,13 +98,10 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
           addFluid(loadBatch(x, y, z, j), loadBatch(vx, vy, vz, j), loadBatch(pressureTermJ, j),
                    loadBatch(density, j), candidates);
         });
-    forEachWallBatch(walls, xs, [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
-      const BatchVec3 rib = xi - loadBatch(wx, wy, wz, b);
-      const FloatBatch r2 = dot(rib, rib);
-      const auto near = candidates && r2 < h2Batch && r2 > zero;
-      if (stdx::none_of(near)) return;
-      terms.addWall(sums, makePair(rib, r2, near, h2), loadBatch(wv, b));
-    });
+    forEachBoundaryPairBatch(walls, xs, xi, h2,
+                             [&](const auto& pair, FloatBatch volume, std::uint32_t) {
+                               terms.addWall(sums, pair, volume);
+                             });
     const Vec3 extra = external ? xyz(external[id[i]]) : Vec3{0.0f, 0.0f, 0.0f};
     acceleration[i] = makeVec4(terms.total(sums, extra), 0.0f);
   });

@@ -45,11 +45,7 @@ void integrateDensityBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
   });
 
   const NeighborLists lists = neighborLists(fluid, grid);
-  const WallCells walls = wallCells(boundary);
-  const float* wx = boundary.batchX.data();
-  const float* wy = boundary.batchY.data();
-  const float* wz = boundary.batchZ.data();
-  const float* wv = boundary.batchVolume.data();
+  const BoundaryBatches walls = boundaryBatches(boundary);
   float* next = fluid.scratchDensity.data();
   float* pressure = fluid.pressure.data();
   Vec4* state = fluid.pressureState.data();
@@ -99,15 +95,11 @@ void integrateDensityBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
           addFluid(c, candidates);
         });
     // The walls stand still, and no density diffuses into them.
-    forEachWallBatch(walls, xs, [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
-      const BatchVec3 rib = xi - loadBatch(wx, wy, wz, b);
-      const FloatBatch r2 = dot(rib, rib);
-      const auto near = candidates && r2 < h2Batch && r2 > zero;
-      if (stdx::none_of(near)) return;
-      const auto pair = makePair(rib, r2, near, h2);
-      const BatchVec3 gradW = rib * pair.where(kernels.gradFactor(pair.r));
-      rate += densityRateTerm(restDensity * loadBatch(wv, b), vi, gradW);
-    });
+    forEachBoundaryPairBatch(
+        walls, xs, xi, h2, [&](const auto& pair, FloatBatch volume, std::uint32_t) {
+          const BatchVec3 gradW = pair.rij * pair.where(kernels.gradFactor(pair.r));
+          rate += densityRateTerm(restDensity * volume, vi, gradW);
+        });
     const float rho = rhoScalar + dt * sumLanes(rate);
     next[i] = rho;
     const PressureState s = pressureStateFromDensity(rho, p);

@@ -125,16 +125,8 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
                        const BoundaryParticles<CpuBackend>& objects, const float* records,
                        Kernels kernels, Periodicity periodic, Pass pass, float* keptGradients) {
   const NeighborLists lists = neighborLists(fluid, grid);
-  const WallCells walls = wallCells(boundary);
-  const float* wx = boundary.batchX.data();
-  const float* wy = boundary.batchY.data();
-  const float* wz = boundary.batchZ.data();
-  const float* wv = boundary.batchVolume.data();
-  const WallCells objectCells = wallCells(objects);
-  const float* ox = objects.batchX.data();
-  const float* oy = objects.batchY.data();
-  const float* oz = objects.batchZ.data();
-  const float* ov = objects.batchVolume.data();
+  const BoundaryBatches walls = boundaryBatches(boundary);
+  const BoundaryBatches objectWalls = boundaryBatches(objects);
   const Vec4* objectVelocity = objects.velocity.data();  // padded with zeros
   const float h2 = kernels.h2;
   const FloatBatch h2Batch(h2), zero(0.0f);
@@ -183,24 +175,16 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
           search(columns, candidates);
         });
     if constexpr (Pass::kWalls) {
-      forEachWallBatch(walls, xs, [&](std::uint32_t b, const FloatBatch::mask_type& candidates) {
-        const BatchVec3 rib = xi - loadBatch(wx, wy, wz, b);
-        const FloatBatch r2 = dot(rib, rib);
-        const auto near = candidates && r2 < h2Batch && r2 > zero;
-        if (stdx::none_of(near)) return;
-        pass.addWall(sum, pairGradient(kernels, makePair(rib, r2, near, h2)), loadBatch(wv, b));
-      });
-      forEachWallBatch(
-          objectCells, xs, [&](std::uint32_t k, const FloatBatch::mask_type& candidates) {
-            const BatchVec3 rik = xi - loadBatch(ox, oy, oz, k);
-            const FloatBatch r2 = dot(rik, rik);
-            const auto near = candidates && r2 < h2Batch && r2 > zero;
-            if (stdx::none_of(near)) return;
+      forEachBoundaryPairBatch(walls, xs, xi, h2,
+                               [&](const auto& pair, FloatBatch volume, std::uint32_t) {
+                                 pass.addWall(sum, pairGradient(kernels, pair), volume);
+                               });
+      forEachBoundaryPairBatch(
+          objectWalls, xs, xi, h2, [&](const auto& pair, FloatBatch volume, std::uint32_t k) {
             const BatchVec3 vk{FloatBatch([&](auto lane) { return objectVelocity[k + lane].x; }),
                                FloatBatch([&](auto lane) { return objectVelocity[k + lane].y; }),
                                FloatBatch([&](auto lane) { return objectVelocity[k + lane].z; })};
-            pass.addMovingWall(sum, pairGradient(kernels, makePair(rik, r2, near, h2)),
-                               loadBatch(ov, k), vk);
+            pass.addMovingWall(sum, pairGradient(kernels, pair), volume, vk);
           });
     }
     pass.finish(i, sum);
