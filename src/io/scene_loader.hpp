@@ -1,5 +1,5 @@
 // Scene files: JSON in, a checked sph::Scene out, and the resolved scene back to JSON.
-// The schema is the one README.md documents under Scenes; scene_schema.cpp lists every key.
+// The schema is the one README.md documents under Scenes; scene_keys.cpp declares every key.
 #pragma once
 
 #include <filesystem>
