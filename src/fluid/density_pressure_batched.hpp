@@ -7,6 +7,8 @@
 #if !defined(__CUDACC__)
 
 #include <cstdint>
+#include <type_traits>
+#include <utility>
 
 #include "fluid/batches.hpp"
 #include "fluid/pair_terms.hpp"
@@ -56,35 +58,44 @@ void densityPassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend
     const FloatBatch lane = laneNumbers();
     const Vec3 xs{x[i], y[i], z[i]};
     const BatchVec3 xi = broadcast(xs);
-    const bool seam = nearSeam(p.periodic, xs);
-    // Meteer 2011, eq. 4, the particle itself included; walls by their volumes.
-    FloatBatch sum(0.0f), wallSum(0.0f);
     // The neighbours (self excluded) for the force pass, in the order found: gathered here,
     // where a batch may be written past the last, then copied to the particle's list.
     std::uint32_t found[kMaxListed + kBatchPadding];
-    std::uint32_t count = 0;
-    // One batch of candidates from j on: the density sum, and the neighbours appended to the
-    // list. No branch on whether any lane passed: it would be mispredicted often, and
-    // appending none costs a store.
-    const auto scan = [&](std::uint32_t j,
-                          const FloatBatch::mask_type& candidates) SPH_BATCH_INLINE_LAMBDA {
-      const BatchVec3 rij = separation(p.periodic, seam, xi, loadBatch(x, y, z, j));
-      const FloatBatch r2 = dot(rij, rij);
-      auto near = candidates && r2 < h2;
-      sum += kernelWhere(kernels, r2, near);
-      // The particle itself is in one batch of one row: a scalar test finds
-      // that batch.
-      if (j <= i && i < j + kBatch) near = near && lane != FloatBatch(float(i - j));
-      const unsigned bits = maskBits(near);
-      if (count <= kMaxListed)
-        count += appendLanes(found + count, j, bits);
+    // Meteer 2011, eq. 4, the particle itself included: the sum and the number of neighbours
+    // found. A separation is taken to its nearest image only near a periodic face, decided
+    // once a particle; each walk keeps its sums to itself, so that the common one, away from
+    // the faces, holds them in registers.
+    const auto walk = [&](auto wrap) SPH_BATCH_INLINE_LAMBDA {
+      FloatBatch sum(0.0f);
+      std::uint32_t count = 0;
+      // One batch of candidates from j on: the density sum, and the neighbours appended to
+      // the list. No branch on whether any lane passed: it would be mispredicted often, and
+      // appending none costs a store.
+      const auto rows = [&](std::uint32_t begin, std::uint32_t end) SPH_BATCH_INLINE_LAMBDA {
+        for (std::uint32_t j = begin; j < end; j += kBatch) {
+          BatchVec3 rij = xi - loadBatch(x, y, z, j);
+          if constexpr (decltype(wrap)::value) rij = minimumImage(p.periodic, rij);
+          const FloatBatch r2 = dot(rij, rij);
+          auto near = lane < FloatBatch(float(end - j)) && r2 < h2;
+          sum += kernelWhere(kernels, r2, near);
+          // The particle itself is in one batch of one row: a scalar test finds that batch.
+          if (j <= i && i < j + kBatch) near = near && lane != FloatBatch(float(i - j));
+          const unsigned bits = maskBits(near);
+          if (count <= kMaxListed)
+            count += appendLanes(found + count, j, bits);
+          else
+            count += std::uint32_t(__builtin_popcount(bits));
+        }
+      };
+      if constexpr (decltype(wrap)::value)
+        forEachNeighborRange(spec, cellStart, xs, rows);
       else
-        count += std::uint32_t(__builtin_popcount(bits));
+        forEachNeighborRangeAwayFromSeams(spec, cellStart, xs, rows);
+      return std::pair<FloatBatch, std::uint32_t>(sum, count);
     };
-    forEachNeighborRange(spec, cellStart, xs, [&](std::uint32_t begin, std::uint32_t end) {
-      for (std::uint32_t j = begin; j < end; j += kBatch)
-        scan(j, lane < FloatBatch(float(end - j)));
-    });
+    const auto [sum, count] =
+        nearSeam(p.periodic, xs) ? walk(std::true_type{}) : walk(std::false_type{});
+    FloatBatch wallSum(0.0f);
     std::uint32_t* list = neighbors + i * stride;
     if (count <= kMaxListed && paddedLength(count) <= stride) {
       for (std::uint32_t k = 0; k < count; ++k) list[k] = found[k];

@@ -46,14 +46,14 @@ SPH_HD void forEachNeighborRangePeriodic(const GridSpec& grid, const std::uint32
   }
 }
 
+// The same for a position farther than a neighbour's reach from every periodic face (or in a
+// grid without any): its rows never wrap. For a hot loop that decides wrapping once a particle,
+// so that the visit is inlined into one walk only.
 template <class VisitRange>
-SPH_HD void forEachNeighborRange(const GridSpec& grid, const std::uint32_t* cellStart, Vec3 p,
-                                 VisitRange&& visitRange) {
+SPH_HD_INLINE void forEachNeighborRangeAwayFromSeams(const GridSpec& grid,
+                                                     const std::uint32_t* cellStart, Vec3 p,
+                                                     VisitRange&& visitRange) {
   const Int3 c = clampToGrid(grid, cellCoordinate(grid, p));
-  if (grid.periodicAxes != 0) {
-    forEachNeighborRangePeriodic(grid, cellStart, c, visitRange);
-    return;
-  }
   const int x0 = c.x > 0 ? c.x - 1 : 0;
   const int x1 = c.x + 1 < grid.dims.x ? c.x + 1 : grid.dims.x - 1;
   for (int z = c.z - 1; z <= c.z + 1; ++z) {
@@ -65,6 +65,16 @@ SPH_HD void forEachNeighborRange(const GridSpec& grid, const std::uint32_t* cell
       visitRange(begin, end);
     }
   }
+}
+
+template <class VisitRange>
+SPH_HD void forEachNeighborRange(const GridSpec& grid, const std::uint32_t* cellStart, Vec3 p,
+                                 VisitRange&& visitRange) {
+  if (grid.periodicAxes != 0)
+    forEachNeighborRangePeriodic(grid, cellStart, clampToGrid(grid, cellCoordinate(grid, p)),
+                                 visitRange);
+  else
+    forEachNeighborRangeAwayFromSeams(grid, cellStart, p, visitRange);
 }
 
 template <class Visit>
@@ -153,7 +163,7 @@ WallCells wallCells(const BoundaryParticles<B>& boundary) {
 
 // Whether x is within one cell of the grid, so that its 27 cells can hold a neighbour: a
 // position farther out would be clamped to the edge and visit particles all out of reach.
-SPH_HD bool nearGrid(const GridSpec& g, Vec3 x) {
+SPH_HD_INLINE bool nearGrid(const GridSpec& g, Vec3 x) {
   const Int3 c = cellCoordinate(g, x);
   return c.x >= -1 && c.y >= -1 && c.z >= -1 && c.x <= g.dims.x && c.y <= g.dims.y &&
          c.z <= g.dims.z;

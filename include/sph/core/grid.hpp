@@ -19,32 +19,32 @@ struct GridSpec {
   std::uint32_t periodicAxes = 0;  // bit a: axis a wraps around (x 1, y 2, z 4)
 };
 
-SPH_HD int floorToInt(float v) {
+SPH_HD_INLINE int floorToInt(float v) {
   const int i = static_cast<int>(v);
   return (v < static_cast<float>(i)) ? i - 1 : i;
 }
 
 // Not clamped: the caller decides what a position outside the grid means.
-SPH_HD Int3 cellCoordinate(const GridSpec& g, Vec3 p) {
+SPH_HD_INLINE Int3 cellCoordinate(const GridSpec& g, Vec3 p) {
   return Int3{floorToInt((p.x - g.origin.x) * g.inverseCellSize),
               floorToInt((p.y - g.origin.y) * g.inverseCellSize),
               floorToInt((p.z - g.origin.z) * g.inverseCellSize)};
 }
 
-SPH_HD bool insideGrid(const GridSpec& g, Int3 c) {
+SPH_HD_INLINE bool insideGrid(const GridSpec& g, Int3 c) {
   return c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x < g.dims.x && c.y < g.dims.y && c.z < g.dims.z;
 }
 
-SPH_HD int clampInt(int v, int lo, int hi) {
+SPH_HD_INLINE int clampInt(int v, int lo, int hi) {
   return v < lo ? lo : (v > hi ? hi : v);
 }
 
-SPH_HD Int3 clampToGrid(const GridSpec& g, Int3 c) {
+SPH_HD_INLINE Int3 clampToGrid(const GridSpec& g, Int3 c) {
   return Int3{clampInt(c.x, 0, g.dims.x - 1), clampInt(c.y, 0, g.dims.y - 1),
               clampInt(c.z, 0, g.dims.z - 1)};
 }
 
-SPH_HD std::uint32_t cellIndex(const GridSpec& g, Int3 c) {
+SPH_HD_INLINE std::uint32_t cellIndex(const GridSpec& g, Int3 c) {
   return static_cast<std::uint32_t>(c.x) +
          static_cast<std::uint32_t>(g.dims.x) *
              (static_cast<std::uint32_t>(c.y) +

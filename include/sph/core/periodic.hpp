@@ -47,7 +47,7 @@ inline Periodicity makePeriodicity(std::uint32_t axes, Vec3 lo, Vec3 hi, float r
 
 // Whether a neighbour of x within reach may lie across a periodic face: only then does a
 // separation need wrapping, so the passes test this once a particle, not once a pair.
-SPH_HD bool nearSeam(const Periodicity& p, Vec3 x) {
+SPH_HD_INLINE bool nearSeam(const Periodicity& p, Vec3 x) {
   if (p.axes == 0) return false;
   const auto near = [&](int axis, float v, float lo, float hi) {
     return isPeriodic(p, axis) && (v - lo < p.reach || hi - v < p.reach);
