@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/error.hpp"
 
 namespace {
@@ -34,7 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<std::string> overrides;
   for (std::string line; overrides.size() < 8 && std::getline(in, line);) overrides.push_back(line);
   try {
-    sph::io::parseScene(baseScene(), "base.json", overrides);
+    sph::scene::parseScene(baseScene(), "base.json", overrides);
   } catch (const sph::InputError&) {
   }
   return 0;

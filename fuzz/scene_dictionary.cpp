@@ -4,7 +4,7 @@
 #include <set>
 #include <string>
 
-#include "io/scene_schema.hpp"
+#include "scene/scene_schema.hpp"
 
 namespace {
 
@@ -13,9 +13,9 @@ std::string quoted(const std::string& word) {
   return "\"\\\"" + word + "\\\"\"";
 }
 
-void collect(const sph::io::KeySchema& level, std::set<std::string>& words) {
+void collect(const sph::scene::KeySchema& level, std::set<std::string>& words) {
   if (!level.name.empty() && level.name != "[]") words.insert(quoted(level.name));
-  for (const sph::io::KeySchema& child : level.children) collect(child, words);
+  for (const sph::scene::KeySchema& child : level.children) collect(child, words);
 }
 
 template <class Names>
@@ -26,7 +26,7 @@ void names(const Names& list, std::set<std::string>& words) {
 }  // namespace
 
 int main() {
-  using namespace sph::io;
+  using namespace sph::scene;
   std::set<std::string> words;
   collect(sceneSchema(), words);
   names(kOutsideNames, words);

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "io/frame_writer.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/error.hpp"
 
 #ifndef SPH_VERSION
@@ -71,7 +71,7 @@ void writeCheckpoint(const fs::path& runDir, const Simulation& sim, const RunPos
       fs::exists(source, sourceError) ? fs::absolute(source, sourceError) : source;
   const nlohmann::json header = {{"sph_version", SPH_VERSION},
                                  {"scene_file", sceneFile.string()},
-                                 {"scene", io::sceneToJson(sim.scene())},
+                                 {"scene", scene::sceneToJson(sim.scene())},
                                  {"checkpoint_every", checkpointEvery},
                                  {"time", sim.time()},
                                  {"steps", sim.stepCount()},

@@ -24,7 +24,7 @@ struct RunPosition {
 struct Checkpoint {
   std::filesystem::path file;
   std::string sceneFile;  // where the scene was read from, for messages
-  nlohmann::json scene;   // resolved (io::sceneToJson)
+  nlohmann::json scene;   // resolved (scene::sceneToJson)
   double checkpointEvery = 0.0;
   double time = 0.0;  // simulated, s
   RunPosition position;

@@ -12,7 +12,7 @@
 #include "checkpoint.hpp"
 #include "commands.hpp"
 #include "io/frame_writer.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "progress.hpp"
 #include "report.hpp"
 #include "run_output.hpp"
@@ -66,15 +66,15 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
       {"outlets", flowJson(sim.outletStats())},
       {"objects", objectsJson(sim.objectStats())},
       {"final", statsJson(sim.stats())},
-      {"scene", io::sceneToJson(sim.scene())}};
+      {"scene", scene::sceneToJson(sim.scene())}};
   io::writeFileAtomically(output.dir() / "summary.json",
                           [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
 }
 
 // A resumed run's scene is the one its checkpoint holds, its end time moved by --duration.
 Scene sceneOf(const RunOptions& options, const std::optional<Checkpoint>& resumed) {
-  if (!resumed) return io::loadScene(options.scene, options.overrides);
-  Scene scene = io::parseScene(resumed->scene, resumed->sceneFile, options.overrides);
+  if (!resumed) return scene::loadScene(options.scene, options.overrides);
+  Scene scene = scene::parseScene(resumed->scene, resumed->sceneFile, options.overrides);
   const double at = resumed->time;
   if (scene.time.duration <= at)
     throw InputError(resumed->file.string() + ": time.duration: the run already reached t = " +

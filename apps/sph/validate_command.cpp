@@ -2,14 +2,14 @@
 #include <cstdio>
 
 #include "commands.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "report.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::cli {
 
 int validateCommand(const std::string& scenePath, const std::vector<std::string>& overrides) {
-  const Scene scene = io::loadScene(scenePath, overrides);
+  const Scene scene = scene::loadScene(scenePath, overrides);
   const Simulation sim(scene);
   printCalibration(stdout, sim);
   const FrameStats s = sim.stats();

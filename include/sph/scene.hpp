@@ -1,5 +1,5 @@
 // The description of a simulation as read from a scene file: geometry, material, parameters,
-// output. Plain data; `io/scene_loader` fills it from JSON, `sim/calibration` derives the rest.
+// output. Plain data; `scene/scene_loader` fills it from JSON, `sim/calibration` derives the rest.
 #pragma once
 
 #include <array>

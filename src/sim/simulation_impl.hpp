@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "backend/cpu_parallel.hpp"
+#include "scene/scene_loader.hpp"
 #include "sim/calibration.hpp"
 #include "sim/emitters.hpp"
 #include "sim/fluid_engine.hpp"
@@ -103,7 +104,7 @@ struct Simulation::Impl {
   } solverTotals;
 
   Impl(const Scene& s, const SimulationOptions& options)
-      : scene(s), threads(checkedThreads(options.threads)), emitters(s) {
+      : scene(scene::validateScene(s)), threads(checkedThreads(options.threads)), emitters(scene) {
     const backend::ScopedThreadCount passThreads(threads);
     backend::requireCompiledInstructionSet();
     sim::refuseIfTooLarge(scene, sim::availableBytes());  // before anything large is made
@@ -126,12 +127,6 @@ struct Simulation::Impl {
       checkContactReach(*world);
     }
 
-    if (scene.objectEngine.type == ObjectEngineKind::Bullet)
-      for (std::size_t b = 0; b < scene.fluid.blocks.size(); ++b)
-        if (!scene.fluid.blocks[b].inside.empty())
-          throw InputError(scene.sourcePath + ": fluid.blocks[" + std::to_string(b) +
-                           "].inside: not with object_engine.type \"bullet\" (Bullet's bodies "
-                           "are made outside the simulation); expected no \"inside\"");
     sampleFluid(setup, walls, world ? &*world : nullptr);
     initialFluid = setup.positions.size();
     engine =

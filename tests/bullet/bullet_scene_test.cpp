@@ -7,7 +7,7 @@
 #include <string>
 
 #include "bullet_test_support.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/bullet_engine.hpp"
 #include "sph/core/constants.hpp"
 #include "sph/error.hpp"
@@ -19,7 +19,7 @@ namespace {
 using testing::kSanitized;
 
 Scene shippedScene() {
-  return io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/bullet_bodies.json");
+  return scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/bullet_bodies.json");
 }
 
 // The shipped scene: its three bodies with their masses, falling into the water, in frames,

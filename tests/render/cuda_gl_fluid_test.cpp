@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "offscreen_context.hpp"
 #include "particle_colours.hpp"
 #include "sph/devices.hpp"
@@ -35,7 +35,7 @@ TEST(CudaGlFluid, WritesTheFluidIntoTheRenderersBuffers) {
   }
   SimulationOptions options;
   options.backend = Backend::Cuda;
-  const Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json");
+  const Scene scene = scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json");
   Simulation sim(scene, options);
   for (int i = 0; i < 10; ++i) sim.step();
 

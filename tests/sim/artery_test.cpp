@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "backends.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph {
@@ -62,7 +62,7 @@ class ArterySqueeze : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(ArterySqueeze, BloodMovesToTheFreeEndAndNoneLeaks) {
   SPH_SKIP_UNLESS_AVAILABLE(GetParam());
-  Scene scene = io::loadScene(scenePath("artery_squeeze.json"));
+  Scene scene = scene::loadScene(scenePath("artery_squeeze.json"));
   ProbeDesc onClamp;  // what the clamp feels, as a surgeon's instrument would
   onClamp.name = "clamp";
   onClamp.kind = ProbeKind::Force;
@@ -107,7 +107,7 @@ SPH_ON_EVERY_BACKEND(ArterySqueeze);
 class ArteryEngineRate : public ::testing::TestWithParam<double> {};
 
 TEST_P(ArteryEngineRate, StableAndLeakFree) {
-  Scene scene = io::loadScene(scenePath("artery_squeeze.json"));
+  Scene scene = scene::loadScene(scenePath("artery_squeeze.json"));
   scene.objectEngine.rate = GetParam();
   ASSERT_TRUE(scene.objectEngine.ownThread);
   Simulation sim(scene);
@@ -139,7 +139,7 @@ void PrintTo(const SqueezeVariant& variant, std::ostream* out) {
 class ArteryVariants : public ::testing::TestWithParam<SqueezeVariant> {};
 
 TEST_P(ArteryVariants, SqueezedTheVesselLeaksNothing) {
-  Scene scene = io::loadScene(scenePath("artery_squeeze.json"));
+  Scene scene = scene::loadScene(scenePath("artery_squeeze.json"));
   GetParam().change(scene);
   Simulation sim(scene);
   ASSERT_EQ(sim.leakedCount(), 0u);
@@ -194,7 +194,7 @@ class ArteryTear : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(ArteryTear, BloodLeavesThroughTheTearAndOnlyThere) {
   SPH_SKIP_UNLESS_AVAILABLE(GetParam());
-  const Scene scene = io::loadScene(scenePath("artery_tear.json"));
+  const Scene scene = scene::loadScene(scenePath("artery_tear.json"));
   ASSERT_EQ(scene.objects[0].deformable.cuts.size(), 1u);
   const AxisBox tear = scene.objects[0].deformable.cuts[0];
   Simulation sim(scene, testing::on(GetParam()));

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "backends.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph {
@@ -16,7 +16,7 @@ class FrameCaptureTest : public ::testing::TestWithParam<Backend> {};
 TEST_P(FrameCaptureTest, TakenLaterIsTheFrameAndStatsOfTheCapture) {
   SPH_SKIP_UNLESS_AVAILABLE(GetParam());
   // Objects too: their particles are copied at the capture.
-  const Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json");
+  const Scene scene = scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json");
   Simulation sim(scene, testing::on(GetParam()));
   for (int i = 0; i < 20; ++i) sim.step();
   const ParticleFrame expectedFrame = sim.frame(false);

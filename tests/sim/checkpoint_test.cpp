@@ -9,7 +9,7 @@
 
 #include "backends.hpp"
 #include "frame_checks.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "scene_builders.hpp"
 #include "sph/error.hpp"
 #include "sph/simulation.hpp"
@@ -84,7 +84,7 @@ TEST(Checkpoint, ContinuityDensityIsCarriedOver) {
 // Emitters, an outlet and probes, as the shipped pipe scene has them, once fluid has been put in
 // and drained.
 TEST(Checkpoint, EmittersOutletsAndProbesPickUpWhereTheyStood) {
-  Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/pipe_flow.json",
+  Scene scene = scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/pipe_flow.json",
                               {"fluid.spacing=0.01", "fluid.blocks.0.min=[0.2, 0.07, 0.02]"});
   Simulation original(scene);
   original.advanceTo(0.3);
@@ -206,7 +206,7 @@ double soonerWhenSanitized(double t) {
 }
 
 Scene shipped(const char* name, std::vector<std::string> overrides = {}) {
-  return io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/" + name, overrides);
+  return scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/" + name, overrides);
 }
 
 TEST(Checkpoint, FloatingRigidBodiesResume) {

@@ -16,7 +16,7 @@
 #include <string>
 
 #include "backends.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph {
@@ -36,7 +36,7 @@ class CornerJets : public ::testing::TestWithParam<JetCase> {};
 
 TEST_P(CornerJets, NoParticleIsShotOffAWallBeforeTheSurgeReachesTheFarWall) {
   const JetCase c = GetParam();
-  Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/dam_break.json");
+  Scene scene = scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/dam_break.json");
   scene.fluid.solver = c.solver;
   if (c.solver == FluidSolver::Wcsph) scene.fluid.density = DensityModel::Continuity;
   scene.fluid.wallFriction = c.wallFriction;

@@ -10,14 +10,14 @@
 
 #include "backend/cpu_parallel.hpp"
 #include "backends.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph {
 namespace {
 
 Scene shippedScene(const char* name) {
-  return io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/" + name);
+  return scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/" + name);
 }
 
 struct Reading {

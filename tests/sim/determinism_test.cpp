@@ -9,7 +9,7 @@
 #include "backend/cpu_parallel.hpp"
 #include "backends.hpp"
 #include "frame_checks.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "scene_builders.hpp"
 #include "sph/simulation.hpp"
 
@@ -72,7 +72,7 @@ ParticleFrame squeeze(Scene scene, double start, int threads, int steps) {
 }
 
 Scene shippedScene(const char* name) {
-  return io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/" + name);
+  return scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/" + name);
 }
 
 // The engine in its own thread, in lock-step, at half the fluid's rate, and the clamp

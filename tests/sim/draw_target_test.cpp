@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "backends.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/simulation.hpp"
 
 #ifdef SPH_HAS_CUDA
@@ -87,7 +87,7 @@ class FluidDrawTargetTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(FluidDrawTargetTest, HoldsEachIdsPositionAndQuantity) {
   SPH_SKIP_UNLESS_AVAILABLE(GetParam());
-  const Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json");
+  const Scene scene = scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json");
   Simulation sim(scene, testing::on(GetParam()));
   for (int i = 0; i < 30; ++i) sim.step();
   const ParticleFrame frame = sim.frame(false);
@@ -143,7 +143,7 @@ TEST_P(FluidDrawTargetTest, HoldsEachIdsPositionAndQuantity) {
 
 TEST_P(FluidDrawTargetTest, TooSmallOrMisalignedIsRefusedAndWritesNothing) {
   SPH_SKIP_UNLESS_AVAILABLE(GetParam());
-  const Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json");
+  const Scene scene = scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json");
   Simulation sim(scene, testing::on(GetParam()));
   const std::size_t n = sim.fluidCount();
   std::vector<float> position(4 * n + 4, -7.0f), value(n, -7.0f);

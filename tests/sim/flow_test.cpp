@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "backends.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/core/constants.hpp"
 #include "sph/simulation.hpp"
 
@@ -141,7 +141,7 @@ SPH_ON_EVERY_BACKEND(Outlets);
 // Every fluid particle of the shipped pipe is inside the pipe (its radius, and a spacing's
 // give) or past its open end, on its way into the drain: none went through the wall.
 TEST(PipeFlow, CarriesTheFlowFromTheEmitterToTheOutletWithoutLosingAParticle) {
-  const Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/pipe_flow.json");
+  const Scene scene = scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/pipe_flow.json");
   Simulation sim(scene);
   const std::uint64_t initial = sim.fluidCount();
   const double until = testing::kSanitized ? 0.02 : 0.3;
@@ -174,7 +174,7 @@ TEST(PipeFlow, CarriesTheFlowFromTheEmitterToTheOutletWithoutLosingAParticle) {
 // (Müller's model, μ in Pa·s) against no-slip walls (wall_friction 2: the wall takes the
 // opposite of the fluid's velocity).
 TEST(Poiseuille, PipeFlowHasTheParabolicProfileAndThePressureDrop) {
-  const Scene scene = io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/poiseuille_pipe.json");
+  const Scene scene = scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/poiseuille_pipe.json");
   const double radius = 0.02, mean = scene.emitters.at(0).speed, mu = scene.fluid.viscosity;
   Simulation sim(scene);
   const std::uint64_t initial = sim.fluidCount();
@@ -246,7 +246,7 @@ double planePoiseuille(double y, double t, double width, double force, double nu
 
 TEST(Poiseuille, PeriodicChannelFollowsMorrisFromRestToTheSteadyParabola) {
   const Scene scene =
-      io::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/poiseuille_channel.json");
+      scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/poiseuille_channel.json");
   const double width = 0.02, force = scene.gravity[0];
   const double nu = scene.fluid.viscosity / scene.fluid.restDensity;
   const double peak = force * width * width / (8.0 * nu);  // 1 cm/s on the mid-plane

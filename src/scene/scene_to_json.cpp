@@ -2,13 +2,13 @@
 // written by the same declarations the loader reads by (scene_keys.cpp).
 #include <nlohmann/json.hpp>
 
-#include "io/scene_keys.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/scene_keys.hpp"
+#include "scene/scene_loader.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 
 nlohmann::json sceneToJson(const Scene& scene) {
   return writeKeys(scene, sceneKeys());
 }
 
-}  // namespace sph::io
+}  // namespace sph::scene

@@ -1,4 +1,4 @@
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,16 +8,16 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/json_input.hpp"
-#include "io/scene_checks.hpp"
-#include "io/scene_flow.hpp"
-#include "io/scene_keys.hpp"
-#include "io/scene_overrides.hpp"
-#include "io/scene_reader.hpp"
-#include "io/scene_schema.hpp"
+#include "scene/json_input.hpp"
+#include "scene/scene_checks.hpp"
+#include "scene/scene_flow.hpp"
+#include "scene/scene_keys.hpp"
+#include "scene/scene_overrides.hpp"
+#include "scene/scene_reader.hpp"
+#include "scene/scene_schema.hpp"
 #include "sph/error.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 namespace {
 
 using nlohmann::json;
@@ -48,6 +48,11 @@ void checkObjectNames(const ReadContext& context, const Scene& scene) {
   for (std::size_t b = 0; b < scene.fluid.blocks.size(); ++b) {
     const std::string& name = scene.fluid.blocks[b].inside;
     if (name.empty()) continue;
+    if (scene.objectEngine.type == ObjectEngineKind::Bullet)
+      context.fail(joinIndex("fluid.blocks", b) + ".inside",
+                   "not with object_engine.type \"bullet\" (Bullet's bodies are made outside the "
+                   "simulation); expected no \"inside\"",
+                   {"object_engine.type"});
     bool found = false;
     for (const ObjectDesc& o : scene.objects) found = found || o.name == name;
     if (!found) {
@@ -207,6 +212,18 @@ void checkGeometry(const ReadContext& context, const Scene& scene) {
     checkWall(context, scene.walls[i], joinIndex("walls", i), scene);
 }
 
+// The checks that read more than one key, in the order a reader meets the keys.
+void checkAcrossKeys(const ReadContext& context, const Scene& scene) {
+  checkGeometry(context, scene);
+  checkObjectNames(context, scene);
+  checkWallNames(context, scene);
+  checkCoupling(context, scene);
+  checkPeriodic(context, scene);
+  checkDensityModel(context, scene);
+  checkProbes(context, scene);
+  checkFlow(context, scene);
+}
+
 }  // namespace
 
 Scene parseScene(const json& document, const std::string& sourceName,
@@ -225,15 +242,18 @@ Scene parseScene(const json& document, const std::string& sourceName,
   Scene scene;
   scene.sourcePath = sourceName;
   readKeys(root, sceneKeys(), scene);
-  checkGeometry(context, scene);
-  checkObjectNames(context, scene);
-  checkWallNames(context, scene);
-  checkCoupling(context, scene);
-  checkPeriodic(context, scene);
-  checkDensityModel(context, scene);
-  checkProbes(context, scene);
-  checkFlow(context, scene);
+  checkAcrossKeys(context, scene);
   return scene;
+}
+
+// Written by the declarations and read back through them, the scene meets every key's limits
+// and the checks across keys exactly as a file would: there is one set of rules, not a second
+// copy for scenes built in code.
+Scene validateScene(const Scene& scene) {
+  Scene named = scene;
+  nameUnnamedElements(named);
+  parseScene(sceneToJson(named), scene.sourcePath.empty() ? "scene" : scene.sourcePath);
+  return named;
 }
 
 Scene loadScene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
@@ -250,4 +270,4 @@ Scene loadScene(const std::filesystem::path& file, const std::vector<std::string
   return parseScene(parseJson(in, name), name, overrides);
 }
 
-}  // namespace sph::io
+}  // namespace sph::scene

@@ -1,6 +1,6 @@
-// Tests of src/io/scene_loader: valid scenes, defaults, files, and the JSON round trip.
+// Tests of src/scene/scene_loader: valid scenes, defaults, files, and the JSON round trip.
 // Errors are in scene_errors_test.cpp, overrides in scene_overrides_test.cpp.
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -11,12 +11,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "io/scene_schema.hpp"
+#include "scene/scene_schema.hpp"
 #include "scene_test_support.hpp"
 #include "sph/error.hpp"
 #include "sph/scene_file.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 namespace {
 
 using nlohmann::json;
@@ -438,4 +438,4 @@ TEST_F(SceneFile, ValidationErrorsNameTheFile) {
 }
 
 }  // namespace
-}  // namespace sph::io
+}  // namespace sph::scene

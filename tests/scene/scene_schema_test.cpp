@@ -1,5 +1,5 @@
-// Tests of src/io/scene_schema: the nearest-key suggestion and key paths.
-#include "io/scene_schema.hpp"
+// Tests of src/scene/scene_schema: the nearest-key suggestion and key paths.
+#include "scene/scene_schema.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 namespace {
 
 const KeySchema& level(const std::string& key) {
@@ -115,9 +115,9 @@ TEST(SceneSchema, TheReadmeReferenceNamesEveryKeyAndNoOther) {
 }
 
 }  // namespace
-}  // namespace sph::io
+}  // namespace sph::scene
 
-namespace sph::io {
+namespace sph::scene {
 namespace {
 
 using nlohmann::json;
@@ -206,4 +206,4 @@ TEST(SceneSchema, TheReadmeReferenceShowsTheDeclaredDefaults) {
 }
 
 }  // namespace
-}  // namespace sph::io
+}  // namespace sph::scene

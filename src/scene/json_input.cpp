@@ -1,4 +1,4 @@
-#include "io/json_input.hpp"
+#include "scene/json_input.hpp"
 
 #include <set>
 #include <utility>
@@ -6,7 +6,7 @@
 
 #include "sph/error.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 
 namespace {
 
@@ -115,4 +115,4 @@ void checkJsonDepth(const json& document, const std::string& where) {
   }
 }
 
-}  // namespace sph::io
+}  // namespace sph::scene

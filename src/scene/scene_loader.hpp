@@ -10,7 +10,7 @@
 
 #include "sph/scene.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 
 // Reads, overrides and validates a scene file. `overrides` are `--set` strings,
 // `dotted.key=value`, applied in order before validation. Throws sph::InputError naming the
@@ -22,8 +22,13 @@ Scene loadScene(const std::filesystem::path& file, const std::vector<std::string
 Scene parseScene(const nlohmann::json& document, const std::string& sourceName,
                  const std::vector<std::string>& overrides = {});
 
+// Throws sph::InputError, as parseScene would, where `scene` breaks a key's limits or a check
+// across keys: what loadScene refuses, Simulation refuses too. Returns the scene with its
+// unnamed walls, objects, probes, emitters and outlets named as the loader names them.
+Scene validateScene(const Scene& scene);
+
 // The fully resolved scene in the same schema: every key, defaults included, unset optional
 // values as null. parseScene(sceneToJson(s), ...) gives back the same values.
 nlohmann::json sceneToJson(const Scene& scene);
 
-}  // namespace sph::io
+}  // namespace sph::scene

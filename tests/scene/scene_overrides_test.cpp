@@ -1,5 +1,5 @@
-// Tests of `--set dotted.key=value` overrides (src/io/scene_overrides), through parseScene.
-#include "io/scene_overrides.hpp"
+// Tests of `--set dotted.key=value` overrides (src/scene/scene_overrides), through parseScene.
+#include "scene/scene_overrides.hpp"
 
 #include <string>
 #include <vector>
@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "scene_test_support.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 namespace {
 
 using nlohmann::json;
@@ -208,4 +208,4 @@ TEST(SceneOverrides, ApplyOverridesReportsKeyPaths) {
 }
 
 }  // namespace
-}  // namespace sph::io
+}  // namespace sph::scene

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace sph::io {
+namespace sph::scene {
 
 // Deeper than any scene (the deepest key, objects[].deformable.pinned[].min[], sits 5 levels
 // down), shallow enough that copying and printing a document never exhausts the stack.
@@ -26,4 +26,4 @@ std::optional<nlohmann::json> parseJsonIfValid(const std::string& text, const st
 // elsewhere, without recursing into it.
 void checkJsonDepth(const nlohmann::json& document, const std::string& where);
 
-}  // namespace sph::io
+}  // namespace sph::scene

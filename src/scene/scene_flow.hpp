@@ -3,13 +3,13 @@
 
 #include <vector>
 
-#include "io/scene_reader.hpp"
+#include "scene/scene_reader.hpp"
 #include "sph/scene.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 
 // Names unique and plain, shapes inside the domain and at least a spacing across, times in
 // order, no more than kMaxEmitters and kMaxOutlets.
 void checkFlow(const ReadContext& context, const Scene& scene);
 
-}  // namespace sph::io
+}  // namespace sph::scene

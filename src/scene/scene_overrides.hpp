@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace sph::io {
+namespace sph::scene {
 
 struct AppliedOverride {
   std::string text;     // as given: "fluid.blocks.0.max=[0.1,0.2,0.1]"
@@ -23,4 +23,4 @@ std::vector<AppliedOverride> applyOverrides(nlohmann::json& document,
                                             const std::vector<std::string>& overrides,
                                             const std::string& sourceName);
 
-}  // namespace sph::io
+}  // namespace sph::scene

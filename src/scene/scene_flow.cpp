@@ -1,12 +1,12 @@
-#include "io/scene_flow.hpp"
+#include "scene/scene_flow.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "io/scene_checks.hpp"
+#include "scene/scene_checks.hpp"
 #include "sph/error.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 namespace {
 
 void checkEmitter(const ReadContext& context, const EmitterDesc& e, const std::string& path,
@@ -56,4 +56,4 @@ void checkFlow(const ReadContext& context, const Scene& scene) {
   }
 }
 
-}  // namespace sph::io
+}  // namespace sph::scene

@@ -10,11 +10,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/scene_overrides.hpp"
-#include "io/scene_schema.hpp"
+#include "scene/scene_overrides.hpp"
+#include "scene/scene_schema.hpp"
 #include "sph/scene.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 
 // A JSON value as a message quotes it, shortened if long.
 std::string describeValue(const nlohmann::json& value);
@@ -142,4 +142,4 @@ Enum ObjectReader::choice(const std::string& key, Enum fallback,
   context_->fail(keyPath(key), expected + ", got " + describeValue(*value));
 }
 
-}  // namespace sph::io
+}  // namespace sph::scene

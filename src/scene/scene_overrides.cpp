@@ -1,18 +1,18 @@
-#include "io/scene_overrides.hpp"
+#include "scene/scene_overrides.hpp"
 
-#include "io/json_input.hpp"
+#include "scene/json_input.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
 #include <optional>
 
-#include "io/json_input.hpp"
-#include "io/scene_reader.hpp"
-#include "io/scene_schema.hpp"
+#include "scene/json_input.hpp"
+#include "scene/scene_reader.hpp"
+#include "scene/scene_schema.hpp"
 #include "sph/error.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 namespace {
 
 using nlohmann::json;
@@ -178,4 +178,4 @@ std::vector<AppliedOverride> applyOverrides(json& document,
   return applied;
 }
 
-}  // namespace sph::io
+}  // namespace sph::scene

@@ -1,10 +1,10 @@
-#include "io/scene_checks.hpp"
+#include "scene/scene_checks.hpp"
 #include "sph/error.hpp"
 
 #include <cmath>
 #include <utility>
 
-namespace sph::io {
+namespace sph::scene {
 
 double lengthOf(const Vec3d& v) {
   return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -72,4 +72,4 @@ void checkNotParallel(const ReadContext& context, const Vec3d& edge1, const Vec3
                  {edge1Key});
 }
 
-}  // namespace sph::io
+}  // namespace sph::scene

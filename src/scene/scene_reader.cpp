@@ -1,4 +1,4 @@
-#include "io/scene_reader.hpp"
+#include "scene/scene_reader.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -6,7 +6,7 @@
 
 #include "sph/error.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 
 using nlohmann::json;
 
@@ -184,4 +184,4 @@ Vec3d ObjectReader::requiredVec3(const std::string& key, double largest) const {
   return checkedVec3(require(key), key, largest);
 }
 
-}  // namespace sph::io
+}  // namespace sph::scene

@@ -1,11 +1,11 @@
-#include "io/scene_schema.hpp"
+#include "scene/scene_schema.hpp"
 
-#include "io/scene_keys.hpp"
+#include "scene/scene_keys.hpp"
 
 #include <algorithm>
 #include <utility>
 
-namespace sph::io {
+namespace sph::scene {
 namespace {
 
 // Optimal string alignment distance: insertions, deletions, substitutions and swaps of two
@@ -93,4 +93,4 @@ std::string unknownKeyText(const std::string& parentPath, const std::string& key
   return text + ")";
 }
 
-}  // namespace sph::io
+}  // namespace sph::scene

@@ -1,4 +1,4 @@
-// Tests of the messages src/io/scene_loader gives for bad scenes: each names the file, the
+// Tests of the messages src/scene/scene_loader gives for bad scenes: each names the file, the
 // dotted key and what was expected.
 #include <limits>
 #include <string>
@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "scene_test_support.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 namespace {
 
 using nlohmann::json;
@@ -381,4 +381,4 @@ TEST(SceneErrors, BadEmittersAndOutletsNameTheKey) {
 }
 
 }  // namespace
-}  // namespace sph::io
+}  // namespace sph::scene

@@ -5,23 +5,27 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/json_input.hpp"
-#include "io/scene_loader.hpp"
+#include "scene/json_input.hpp"
+#include "scene/scene_loader.hpp"
 
 namespace sph {
 
 Scene loadScene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  return io::loadScene(file, overrides);
+  return scene::loadScene(file, overrides);
 }
 
 Scene parseScene(const std::string& jsonText, const std::string& sourceName,
                  const std::vector<std::string>& overrides) {
   std::istringstream in(jsonText);
-  return io::parseScene(io::parseJson(in, sourceName), sourceName, overrides);
+  return scene::parseScene(scene::parseJson(in, sourceName), sourceName, overrides);
+}
+
+Scene validateScene(const Scene& scene) {
+  return scene::validateScene(scene);
 }
 
 std::string sceneToJsonText(const Scene& scene) {
-  return io::sceneToJson(scene).dump(2);
+  return scene::sceneToJson(scene).dump(2);
 }
 
 }  // namespace sph

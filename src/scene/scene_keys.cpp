@@ -1,13 +1,13 @@
 // Every key of a scene file, declared once (scene_keys.hpp says how). The order is the order
 // they are read and checked in; README.md's scene reference documents them and
-// tests/io/scene_schema_test.cpp holds the two to the same keys and defaults.
-#include "io/scene_keys.hpp"
+// tests/scene/scene_schema_test.cpp holds the two to the same keys and defaults.
+#include "scene/scene_keys.hpp"
 
 #include <algorithm>
 
 #include "sph/error.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 namespace {
 
 using nlohmann::json;
@@ -387,13 +387,39 @@ const SceneKeys<LimitsDesc>& limitsKeys() {
   return keys;
 }
 
-// Unnamed elements of a list are named by their place in it: "wall2", "probe0".
+// What an unnamed element of a list is called: its kind and its place in the list.
+constexpr const char* kWallName = "wall";
+constexpr const char* kObjectName = "object";
+constexpr const char* kProbeName = "probe";
+constexpr const char* kEmitterName = "emitter";
+constexpr const char* kOutletName = "outlet";
+
+template <class Desc>
+void nameElement(Desc& d, std::size_t index, const char* prefix) {
+  d.name = prefix + std::to_string(index);
+}
+
+// The loader names each element before reading its keys: a name in the file replaces it.
 template <class Desc>
 std::function<void(Desc&, std::size_t)> namedAfter(const char* prefix) {
-  return [prefix](Desc& d, std::size_t index) { d.name = prefix + std::to_string(index); };
+  return [prefix](Desc& d, std::size_t index) { nameElement(d, index, prefix); };
+}
+
+template <class Desc>
+void nameUnnamed(std::vector<Desc>& items, const char* prefix) {
+  for (std::size_t i = 0; i < items.size(); ++i)
+    if (items[i].name.empty()) nameElement(items[i], i, prefix);
 }
 
 }  // namespace
+
+void nameUnnamedElements(Scene& scene) {
+  nameUnnamed(scene.walls, kWallName);
+  nameUnnamed(scene.objects, kObjectName);
+  nameUnnamed(scene.probes, kProbeName);
+  nameUnnamed(scene.emitters, kEmitterName);
+  nameUnnamed(scene.outlets, kOutletName);
+}
 
 const SceneKeys<Scene>& sceneKeys() {
   static const SceneKeys<Scene> keys{{
@@ -402,23 +428,24 @@ const SceneKeys<Scene>& sceneKeys() {
       section("domain", at(&Scene::domain), domainKeys(), /*required=*/true),
       vec3("gravity", at(&Scene::gravity), kLargestAcceleration),
       section("fluid", at(&Scene::fluid), fluidKeys(), /*required=*/true),
-      list("walls", at(&Scene::walls), wallKeys(), false, false, namedAfter<WallDesc>("wall")),
+      list("walls", at(&Scene::walls), wallKeys(), false, false, namedAfter<WallDesc>(kWallName)),
       list("objects", at(&Scene::objects), objectKeys(), false, false,
-           namedAfter<ObjectDesc>("object")),
+           namedAfter<ObjectDesc>(kObjectName)),
       section("interaction", at(&Scene::interaction), interactionKeys()),
       section("object_engine", at(&Scene::objectEngine), objectEngineKeys()),
       section("calibration", at(&Scene::calibration), calibrationKeys()),
       section("time", at(&Scene::time), timeKeys()),
       section("output", at(&Scene::output), outputKeys()),
-      list("probes", at(&Scene::probes), probeKeys(), false, false, namedAfter<ProbeDesc>("probe")),
+      list("probes", at(&Scene::probes), probeKeys(), false, false,
+           namedAfter<ProbeDesc>(kProbeName)),
       list("emitters", at(&Scene::emitters), emitterKeys(), false, false,
-           namedAfter<EmitterDesc>("emitter")),
+           namedAfter<EmitterDesc>(kEmitterName)),
       list("outlets", at(&Scene::outlets), outletKeys(), false, false,
-           namedAfter<OutletDesc>("outlet")),
+           namedAfter<OutletDesc>(kOutletName)),
       section("failure", at(&Scene::failure), failureKeys()),
       section("limits", at(&Scene::limits), limitsKeys()),
   }};
   return keys;
 }
 
-}  // namespace sph::io
+}  // namespace sph::scene

@@ -7,11 +7,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "io/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/error.hpp"
 #include "sph/scene.hpp"
 
-namespace sph::io::scene_test {
+namespace sph::scene::scene_test {
 
 inline constexpr const char* kSource = "scenes/x.json";
 
@@ -108,4 +108,4 @@ inline void expectScenesEqual(const Scene& a, const Scene& b) {
   EXPECT_EQ(written, expected) << "differences: " << nlohmann::json::diff(expected, written).dump();
 }
 
-}  // namespace sph::io::scene_test
+}  // namespace sph::scene::scene_test

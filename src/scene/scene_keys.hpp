@@ -24,12 +24,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/scene_reader.hpp"
-#include "io/scene_schema.hpp"
+#include "scene/scene_reader.hpp"
+#include "scene/scene_schema.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 
-// Where a key's value lives in a Desc: a member, or a member of a member.
+// Where a key's value lives in a Desc: a member.
 template <class Desc, class T>
 struct Field {
   std::function<T&(Desc&)> get;
@@ -40,12 +40,6 @@ template <class Desc, class T>
 Field<Desc, T> at(T Desc::*member) {
   return {[member](Desc& d) -> T& { return d.*member; },
           [member](const Desc& d) -> const T& { return d.*member; }};
-}
-
-template <class Desc, class Mid, class T>
-Field<Desc, T> at(Mid Desc::*outer, T Mid::*inner) {
-  return {[outer, inner](Desc& d) -> T& { return (d.*outer).*inner; },
-          [outer, inner](const Desc& d) -> const T& { return (d.*outer).*inner; }};
 }
 
 template <class Desc>
@@ -320,4 +314,8 @@ SceneKey<Desc> boxMax(Field<Desc, AxisBox> box) {
 // Every key of a scene file (scene_keys.cpp).
 const SceneKeys<Scene>& sceneKeys();
 
-}  // namespace sph::io
+// Gives each unnamed wall, object, probe, emitter and outlet the name the loader gives it
+// ("wall2": the third wall): a scene built in code may leave them empty.
+void nameUnnamedElements(Scene& scene);
+
+}  // namespace sph::scene

@@ -12,7 +12,7 @@
 
 #include "sph/scene.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 
 // One key of the schema. An object lists its keys; an array has a single child, named "[]",
 // that describes every element.
@@ -109,4 +109,4 @@ const char* nameOf(Enum value, const NamedValue<Enum> (&names)[N]) {
   throw std::logic_error("scene enumeration value without a name");
 }
 
-}  // namespace sph::io
+}  // namespace sph::scene

@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "io/scene_reader.hpp"
+#include "scene/scene_reader.hpp"
 #include "sph/scene.hpp"
 
-namespace sph::io {
+namespace sph::scene {
 
 // The names of `items` (the scene's array `list` of `what`s): no commas or quotes (they head
 // columns and keys of the outputs), none twice.
@@ -44,4 +44,4 @@ void checkAtLeastSpacing(const ReadContext& context, double value, const std::st
 void checkNotParallel(const ReadContext& context, const Vec3d& edge1, const Vec3d& edge2,
                       const std::string& edge1Key, const std::string& key);
 
-}  // namespace sph::io
+}  // namespace sph::scene
