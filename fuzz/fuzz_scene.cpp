@@ -16,7 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const nlohmann::json document = sph::scene::parseJson(in, "fuzz.json");
     const sph::Scene scene = sph::scene::parseScene(document, "fuzz.json");
     const nlohmann::json written = sph::scene::sceneToJson(scene);
-    if (sph::scene::sceneToJson(sph::scene::parseScene(written, "written.json")) != written) std::abort();
+    if (sph::scene::sceneToJson(sph::scene::parseScene(written, "written.json")) != written)
+      std::abort();
   } catch (const sph::InputError&) {
   }
   return 0;

@@ -9,8 +9,8 @@
 
 #include "backend/cpu_parallel.hpp"
 #include "commands.hpp"
-#include "scene/scene_loader.hpp"
 #include "report.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/box_drop_scene.hpp"
 #include "sph/devices.hpp"
 #include "sph/error.hpp"

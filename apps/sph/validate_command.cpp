@@ -2,8 +2,8 @@
 #include <cstdio>
 
 #include "commands.hpp"
-#include "scene/scene_loader.hpp"
 #include "report.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::cli {

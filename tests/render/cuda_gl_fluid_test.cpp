@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_loader.hpp"
 #include "offscreen_context.hpp"
 #include "particle_colours.hpp"
+#include "scene/scene_loader.hpp"
 #include "sph/devices.hpp"
 
 namespace sph::view {

@@ -85,7 +85,7 @@ TEST(Checkpoint, ContinuityDensityIsCarriedOver) {
 // and drained.
 TEST(Checkpoint, EmittersOutletsAndProbesPickUpWhereTheyStood) {
   Scene scene = scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/pipe_flow.json",
-                              {"fluid.spacing=0.01", "fluid.blocks.0.min=[0.2, 0.07, 0.02]"});
+                                 {"fluid.spacing=0.01", "fluid.blocks.0.min=[0.2, 0.07, 0.02]"});
   Simulation original(scene);
   original.advanceTo(0.3);
   ASSERT_GT(original.emittedCount(), 0u);

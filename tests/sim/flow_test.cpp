@@ -174,7 +174,8 @@ TEST(PipeFlow, CarriesTheFlowFromTheEmitterToTheOutletWithoutLosingAParticle) {
 // (Müller's model, μ in Pa·s) against no-slip walls (wall_friction 2: the wall takes the
 // opposite of the fluid's velocity).
 TEST(Poiseuille, PipeFlowHasTheParabolicProfileAndThePressureDrop) {
-  const Scene scene = scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/poiseuille_pipe.json");
+  const Scene scene =
+      scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/poiseuille_pipe.json");
   const double radius = 0.02, mean = scene.emitters.at(0).speed, mu = scene.fluid.viscosity;
   Simulation sim(scene);
   const std::uint64_t initial = sim.fluidCount();
