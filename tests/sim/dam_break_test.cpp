@@ -72,6 +72,9 @@ void expectFrontFollowsMartinAndMoyce(Backend backend, FluidSolver solver) {
   int compared = 0;
   for (const FrontPoint& p : experiment) {
     if (p.T > 3.0) break;
+    // Under the sanitizers (a tenth of the speed) the collapse's first steps are a memory
+    // check; the comparison is the Release build's.
+    if (testing::kSanitized && p.T > 0.8) return;
     sim.advanceTo(p.T * std::sqrt(a / g));
     const double Z = frontPosition(sim) / a;
     const double error = (Z - p.Z) / p.Z;
