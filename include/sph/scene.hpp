@@ -105,6 +105,10 @@ struct DfsphDesc {
   // The step under acceleration: Δt ≤ force_factor √(h / a_max). The solve predicts the
   // density linearly over the step; past about 0.1 the prediction fails near walls.
   double forceFactor = 0.1;
+  // The share of a coarse-grid solve's pressure added to the density solve's first iteration
+  // (docs/solvers.md): the smooth part of the error at once, where Jacobi takes a pass a
+  // neighbourhood. 0 leaves it out.
+  double coarseCorrection = 0.7;
 };
 
 struct FluidDesc {

@@ -100,6 +100,7 @@ struct RatePass {
   const Vec4* wallGradient;
   float* stiffnessRecords;
   std::uint64_t* error;
+  float* signedError;  // e_i before it is counted: what the coarse level averages
 
   // A particle the divergence solve corrects: one with a full neighbourhood, of fluid or of
   // fluid and walls (a particle against a wall has half the fluid neighbours, and its density).
@@ -128,6 +129,7 @@ struct RatePass {
                         ? (density[i] + dt * rate) / restDensity - 1.0f
                         : (inBulk(i) ? dt * rate / restDensity : 0.0f);
     const float counted = e > 0.0f ? e : 0.0f;
+    signedError[i] = e;
     stiffnessRecords[kRecordFields * i + SolverRecord::kK] =
         dfsphStiffness(counted, factor[i], restDensity, dt);
     // The fixed point's range: 16 × 2³² a particle leaves room in 64 bits for 2³⁸ particles.

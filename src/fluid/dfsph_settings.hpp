@@ -19,6 +19,9 @@ struct SolverSettings {
   // Particles with fewer listed neighbours than this (the free surface) are left alone by the
   // divergence solve: their deficient neighbourhoods read as expansion.
   std::uint32_t minNeighbours = 0;
+  // The share of the coarse level's K (coarse_pressure.hpp) the density solve adds to its first
+  // iteration; 0: none.
+  float coarseShare = 0.0f;
 };
 
 struct SolverReport {

@@ -67,6 +67,8 @@ struct FluidParticles {
   Buffer<Vec4> solverWallGradient;    // xyz: G_w = Σ_b ψ_b ∇W_ib, per step
   Buffer<float> solverTotal;          // Σ K_i applied this solve
   Buffer<std::uint64_t> solverError;  // the last iteration's e_i, fixed point (kErrorScale)
+  Buffer<float> solverSignedError;    // the same, signed: < 0 where the fluid would expand
+  Buffer<float> coarseStiffness;      // the coarse level's K (coarse_correction.hpp)
   // ∇W_ij = g_ij (x_i - x_j) of each listed neighbour (n × neighborStride, beside neighbors),
   // kept by the step's first solver pass for the others (solver_walk.hpp)
   Buffer<float> pairGradient;

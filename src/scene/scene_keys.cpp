@@ -84,6 +84,7 @@ const SceneKeys<DfsphDesc>& dfsphKeys() {
       boolean("divergence_solve", at(&DfsphDesc::divergenceSolve)),
       boolean("density_solve", at(&DfsphDesc::densitySolve)),
       number("force_factor", at(&DfsphDesc::forceFactor), kUnitStep),
+      number("coarse_correction", at(&DfsphDesc::coarseCorrection), kClosedUnit),
   }};
   return keys;
 }

@@ -142,7 +142,7 @@ class EngineImpl final : public FluidEngine {
   fluid::SolverReport solve(const fluid::SolverSettings& settings, fluid::SolverTarget target,
                             float dt) override {
     return fluid::solve(fluid_, grid_, boundary_, objectBoundary_, params_, settings, target, dt,
-                        walk_);
+                        walk_, coarse_);
   }
   fluid::StepMeasures measureStep() override {
     return fluid::measureStep(fluid_, params_.restDensity);
@@ -330,6 +330,7 @@ class EngineImpl final : public FluidEngine {
   mutable std::shared_ptr<DownloadStaging> staging_;  // made on the first download
   fluid::BoundaryParticles<B> boundary_;
   fluid::Grid<B> grid_;
+  fluid::CoarsePressure coarse_;  // the density solve's coarse level, host memory
   interaction::ObjectParticles<B> objects_;
   fluid::BoundaryParticles<B> objectBoundary_;  // the objects', with boundary coupling
   interaction::ContainmentState<B> containment_;

@@ -196,14 +196,15 @@ TEST_P(FluidStages, TheDensitySolveUndoesACompressionWithoutMakingMomentum) {
   settings.warmStart = false;
   settings.minNeighbours = 20;
   // No iterations: only the first pass, which finds the step's factors.
+  CoarsePressure coarse;
   solve(fluid.particles, fluid.grid, fluid.walls, fluid.objects, fluid.params, settings,
-        SolverTarget::NoDivergence, 0.0f, GetParam());
+        SolverTarget::NoDivergence, 0.0f, GetParam(), coarse);
   settings.tolerance = 1e-4f;
   settings.maxIterations = 200;
   const float dt = 1e-3f;
   const SolverReport report =
       solve(fluid.particles, fluid.grid, fluid.walls, fluid.objects, fluid.params, settings,
-            SolverTarget::RestDensity, dt, GetParam());
+            SolverTarget::RestDensity, dt, GetParam(), coarse);
   EXPECT_TRUE(report.converged);
   EXPECT_GT(report.iterations, 1);
 

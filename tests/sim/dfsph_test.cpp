@@ -4,11 +4,15 @@
 // hydrostatic_test.cpp and dam_break_test.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "backend/cpu_parallel.hpp"
+#include "backends.hpp"
+#include "scene/scene_loader.hpp"
 #include "scene_builders.hpp"
 #include "sph/error.hpp"
 #include "sph/simulation.hpp"
@@ -207,6 +211,44 @@ TEST(Dfsph, BatchedPassesMatchTheOneAtATimePasses) {
   for (std::size_t k = 0; k < one.velocity.size(); ++k)
     speed = std::max(speed, std::abs(double(one.velocity[k]) - batched.velocity[k]));
   EXPECT_LT(speed, 1e-3);
+}
+
+// The coarse level (fluid.dfsph.coarse_correction, src/fluid/coarse_pressure.hpp) solves the
+// smooth part of the density error at once, where Jacobi carries it a neighbourhood a pass: in
+// the shipped dam break (a column 30 particles deep) the density solve takes fewer iterations,//
+// with no particle lost. Measured over 0.15 s: 16.7 iterations a step without it, 9.9 with it; the
+// largest compression 1.6 % and 1.9 %.
+TEST(Dfsph, TheCoarseLevelTakesFewerIterationsInADeepColumn) {
+  Scene scene =
+      incompressible(scene::loadScene(std::string(SPH_SOURCE_DIR) + "/scenes/dam_break.json"));
+  // Under the sanitizers (a tenth of the speed) a few steps check the memory; the figures are
+  // the Release build's.
+  const double until = testing::kSanitized ? 0.01 : 0.15;
+  struct Run {
+    double iterationsPerStep, largestCompression;
+    std::uint64_t fluid;
+  };
+  const auto run = [&](double share) {
+    scene.fluid.dfsph.coarseCorrection = share;
+    Simulation sim(scene);
+    double largest = 0.0;
+    while (sim.time() < until) {
+      sim.step(until);
+      largest = std::max(largest, sim.stats().maxDensityError);
+    }
+    const FrameStats stats = sim.stats();
+    return Run{double(stats.densityIterations) / double(stats.steps), largest, stats.fluidCount};
+  };
+  const Run jacobi = run(0.0), coarse = run(0.7);
+  std::printf(
+      "  density iterations a step: %.2f by Jacobi alone, %.2f with the coarse level; "
+      "largest compression %.2f %% and %.2f %%\n",
+      jacobi.iterationsPerStep, coarse.iterationsPerStep, 100.0 * jacobi.largestCompression,
+      100.0 * coarse.largestCompression);
+  EXPECT_EQ(coarse.fluid, jacobi.fluid);
+  if (testing::kSanitized) return;
+  EXPECT_LT(coarse.iterationsPerStep, 0.75 * jacobi.iterationsPerStep);
+  EXPECT_LT(coarse.largestCompression, 0.05);
 }
 
 }  // namespace
