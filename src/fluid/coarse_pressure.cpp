@@ -3,14 +3,12 @@
 #include <cmath>
 
 #include "backend/cpu_parallel.hpp"
+#include "fluid/dfsph_passes.hpp"
 
 namespace sph::fluid {
 
 namespace {
 
-// A particle counts in its cell's error only in the bulk: a free-surface particle's deficient
-// neighbourhood reads as expansion, and averaged in, it pulled the cells under the surface.
-constexpr float kBulkDensity = 0.95f;
 // A cell is fluid, with a K to solve for, when fluid and walls fill this much of it.
 constexpr double kFilledCell = 0.6;
 // Layers of fluid cells under the surface left to Jacobi.
@@ -52,6 +50,8 @@ void CoarsePressure::bin(const CoarseInput& in) {
     if (!inside(c)) continue;
     const std::size_t k = index(c);
     occupancy_[k] += in.particleVolume / cellVolume;
+    // Only the bulk (dfsph_passes.hpp): a free-surface particle's deficient neighbourhood reads
+    // as expansion, and averaged in, it pulled the cells under the surface.
     if (in.density[i] >= kBulkDensity * in.restDensity) {
       errorSum_[k] += in.error[i];
       ++bulkCount_[k];

@@ -5,7 +5,8 @@
 //   Δt² ρ0 ∇²K = -e  (Δv = -Δt ρ0 ∇K and Δe = -Δt ∇·Δv, core/dfsph.hpp),
 // is solved by conjugate gradients on the cells (K = 0 in the cells at the free surface, no flux
 // into the walls'), and K is interpolated back to the particles. Host code: the solve is small
-// (a cell holds about 64 particles), serial, and so the same on any thread count.
+// (a cell holds about 64 particles) and serial, the interpolation parallel, and both the same on
+// any thread count.
 #pragma once
 
 #include <cstddef>
@@ -43,11 +44,6 @@ class CoarsePressure {
   // untouched, where there is nothing to solve: no cell of bulk fluid that reaches the free
   // surface (fluid closed in on every side has its pressure fixed only up to a constant).
   bool solve(const CoarseInput& in, float* k);
-
-  // The last solve's cells, for tests: kind and K of the cell at coarse coordinate c.
-  Kind kindAt(Int3 c) const { return Kind(kind_[index(c)]); }
-  double pressureAt(Int3 c) const { return cellK_[index(c)]; }
-  Int3 dims() const { return dims_; }
 
  private:
   std::size_t index(Int3 c) const { return (std::size_t(c.z) * dims_.y + c.y) * dims_.x + c.x; }
