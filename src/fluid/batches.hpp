@@ -68,18 +68,54 @@ inline void transpose8(__m256 (&rows)[8]) {
 }
 #endif
 
-// The 8 floats of each record `at` names, as 8 batches: column c of the records in lane k.
-inline void gatherRecords(const float* records, const std::uint32_t* at, FloatBatch (&columns)[8]) {
 #if defined(__AVX2__)
-  if constexpr (kBatch == 8) {
+// The 4 floats of each record `at` names from `first` on, as 4 batches: records k and k + 4
+// share a register, one in each half, so that the rows become columns by in-lane shuffles (8
+// of them, against 24 for a whole 8 × 8 transpose).
+inline void transposeHalves(const float* records, const std::uint32_t* at, std::uint32_t first,
+                            __m256 (&columns)[4]) {
+  __m256 rows[4];
+  for (int k = 0; k < 4; ++k)
+    rows[k] = _mm256_insertf128_ps(
+        _mm256_castps128_ps256(_mm_loadu_ps(records + 8 * std::size_t(at[k]) + first)),
+        _mm_loadu_ps(records + 8 * std::size_t(at[k + 4]) + first), 1);
+  const __m256 t0 = _mm256_unpacklo_ps(rows[0], rows[1]), t1 = _mm256_unpacklo_ps(rows[2], rows[3]);
+  const __m256 t2 = _mm256_unpackhi_ps(rows[0], rows[1]), t3 = _mm256_unpackhi_ps(rows[2], rows[3]);
+  columns[0] = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(1, 0, 1, 0));
+  columns[1] = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(3, 2, 3, 2));
+  columns[2] = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(1, 0, 1, 0));
+  columns[3] = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(3, 2, 3, 2));
+}
+#endif
+
+// The first `kColumns` floats of each record `at` names, as batches: column c of the records in
+// lane k. A pass that reads only some of a record's floats gathers only those: the shuffles
+// that turn rows into columns bound the solver's passes.
+template <std::uint32_t kColumns = 8>
+inline void gatherRecords(const float* records, const std::uint32_t* at, FloatBatch (&columns)[8]) {
+  static_assert(kColumns >= 1 && kColumns <= 8, "a record holds 8 floats");
+#if defined(__AVX2__)
+  if constexpr (kBatch == 8 && kColumns == 8) {
     __m256 rows[8];
     for (int k = 0; k < 8; ++k) rows[k] = _mm256_loadu_ps(records + 8 * std::size_t(at[k]));
     transpose8(rows);
     for (int c = 0; c < 8; ++c) columns[c] = FloatBatch(rows[c]);
     return;
+  } else if constexpr (kBatch == 8 && kColumns <= 4) {
+    __m256 low[4];
+    transposeHalves(records, at, 0, low);
+    for (std::uint32_t c = 0; c < kColumns; ++c) columns[c] = FloatBatch(low[c]);
+    return;
+  } else if constexpr (kBatch == 8) {
+    __m256 low[4], high[4];
+    transposeHalves(records, at, 0, low);
+    transposeHalves(records, at, 4, high);
+    for (std::uint32_t c = 0; c < 4; ++c) columns[c] = FloatBatch(low[c]);
+    for (std::uint32_t c = 4; c < kColumns; ++c) columns[c] = FloatBatch(high[c - 4]);
+    return;
   }
 #endif
-  for (int c = 0; c < 8; ++c)
+  for (std::uint32_t c = 0; c < kColumns; ++c)
     columns[c] = FloatBatch([&](auto lane) { return records[8 * std::size_t(at[lane]) + c]; });
 }
 

@@ -87,6 +87,7 @@ struct RateSum {
 // would undo it alone (one Jacobi step, Bender & Koschier 2017).
 struct RatePass {
   static constexpr bool kFirstOfStep = false;
+  static constexpr std::uint32_t kColumns = 6;  // x, y, z, v
   // Boundary particles do not move within a step: their share is ρ0 (v_i·G_w - Σ ψ_b v_b·∇W_ib),
   // kept by the factor pass.
   static constexpr bool kWalls = false;
@@ -142,6 +143,7 @@ struct RatePass {
 // reads only particle i's own factor, which the factor pass has just summed.
 struct FactorAndRatePass {
   static constexpr bool kFirstOfStep = true;
+  static constexpr std::uint32_t kColumns = RatePass::kColumns;
   static constexpr bool kWalls = true;
   FactorPass factor;
   RatePass rate;
@@ -186,6 +188,7 @@ struct VelocitySum {
 // wall particle mirroring K_i. Adds K_i to the solve's total.
 struct VelocityPass {
   static constexpr bool kFirstOfStep = false;
+  static constexpr std::uint32_t kColumns = 4;  // x, y, z, K
   // The walls mirror K_i: their share is -2 ρ0 K_i G_w, from the factor pass.
   static constexpr bool kWalls = false;
   float mass, restDensity, dt;

@@ -5,6 +5,8 @@
 //   kFirstOfStep                            true: computes the listed pairs' kernel gradients
 //                                           and keeps them; false: reads them back
 //   kWalls                                  whether it walks the walls
+//   kColumns                                how many of a neighbour's record's floats it reads:
+//                                           the first kColumns (the walks gather no more)
 //   Sum start<S, V>(i)                      what particle i sums, zeroed
 //   addFluid(sum, ∇W_ij, columns)           a fluid neighbour: columns[c] is float c of its record
 //   addWall(sum, ∇W_ib, volume)             a wall particle of volume ψ_b, if kWalls
@@ -63,7 +65,7 @@ void solverPass(const FluidParticles<B>& fluid, const Grid<B>& grid,
         // Neighbour j's record and x_i - x_j.
         const auto read = [&](std::uint32_t j, float(&columns)[kRecordFields]) {
           const float* rj = records + kRecordFields * j;
-          for (std::uint32_t c = 0; c < kRecordFields; ++c) columns[c] = readOnly(rj + c);
+          for (std::uint32_t c = 0; c < Pass::kColumns; ++c) columns[c] = readOnly(rj + c);
           return separation(periodic, seam, xi, Vec3{columns[0], columns[1], columns[2]});
         };
         const std::uint32_t count = lists.count[i];
@@ -152,7 +154,7 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
         lists, i, xs,
         [&](const std::uint32_t* at) SPH_BATCH_INLINE_LAMBDA {
           FloatBatch columns[kRecordFields];
-          gatherRecords(records, at, columns);
+          gatherRecords<Pass::kColumns>(records, at, columns);
           const BatchVec3 rij =
               separation(periodic, seam, xi, BatchVec3{columns[0], columns[1], columns[2]});
           FloatBatch g;
@@ -171,7 +173,7 @@ void solverPassBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBa
           std::uint32_t at[kBatch];
           for (std::uint32_t k = 0; k < kBatch; ++k) at[k] = j + k;  // the padding is a record
           FloatBatch columns[kRecordFields];
-          gatherRecords(records, at, columns);
+          gatherRecords<Pass::kColumns>(records, at, columns);
           search(columns, candidates);
         });
     if constexpr (Pass::kWalls) {
