@@ -1,4 +1,5 @@
 #include "backend/cpu_backend.hpp"
+#include "sim/cpu_stage_instances.hpp"
 #include "sim/engine_impl.hpp"
 
 namespace sph::sim {
