@@ -18,9 +18,13 @@ namespace detail {
 
 template <class B, class Options, class Kernels>
 void forcePass(FluidParticles<B>& fluid, const Grid<B>& grid, const BoundaryParticles<B>& boundary,
-               const FluidParameters& params, Kernels kernels) {
+               const BoundaryParticles<B>& objects, const FluidParameters& params,
+               Kernels kernels) {
   const NeighborLists lists = neighborLists(fluid, grid);
   const WallCells walls = wallCells(boundary);
+  const WallCells objectCells = wallCells(objects);
+  const Vec4* object = objects.position.data();  // w: volume ψ_k
+  const Vec4* objectVelocity = objects.velocity.data();
   const Vec4* position = fluid.position.data();
   const Vec4* velocity = fluid.velocity.data();
   const Vec4* state = fluid.pressureState.data();
@@ -54,6 +58,14 @@ void forcePass(FluidParticles<B>& fluid, const Grid<B>& grid, const BoundaryPart
           if (r2 >= h2 || r2 <= 0.0f) return;
           terms.addWall(sums, makePair(rib, r2, true, h2), xb.w);
         });
+        forEachWallNeighbor(objectCells, xi, [&](std::uint32_t k) {
+          const Vec4 xk = readOnly(object + k);
+          const Vec3 rik = xi - xyz(xk);
+          const float r2 = lengthSquared(rik);
+          if (r2 >= h2 || r2 <= 0.0f) return;
+          terms.addObject(sums, makePair(rik, r2, true, h2), xk.w,
+                          xyz(readOnly(objectVelocity + k)));
+        });
         const Vec3 extra = external ? xyz(external[id[i]]) : Vec3{0.0f, 0.0f, 0.0f};
         acceleration[i] = makeVec4(terms.total(sums, extra), 0.0f);
       });
@@ -61,60 +73,65 @@ void forcePass(FluidParticles<B>& fluid, const Grid<B>& grid, const BoundaryPart
 
 template <class B, class Options>
 void forcePassWithKernels(FluidParticles<B>& fluid, const Grid<B>& grid,
-                          const BoundaryParticles<B>& boundary, const FluidParameters& params,
-                          [[maybe_unused]] NeighborWalk walk) {
+                          const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
+                          const FluidParameters& params, [[maybe_unused]] NeighborWalk walk) {
   withKernels(params, [&](auto kernels) {
 #if !defined(__CUDACC__)
     if constexpr (B::kBatches) {
       if (walk == NeighborWalk::Batched) {
-        forcePassBatched<Options>(fluid, grid, boundary, params, kernels);
+        forcePassBatched<Options>(fluid, grid, boundary, objects, params, kernels);
         return;
       }
     }
 #endif
-    forcePass<B, Options>(fluid, grid, boundary, params, kernels);
+    forcePass<B, Options>(fluid, grid, boundary, objects, params, kernels);
   });
 }
 
 template <class B, PressureForm kForm, ViscosityModel kViscosity, bool kPressure>
 void forcePassWithTension(FluidParticles<B>& fluid, const Grid<B>& grid,
-                          const BoundaryParticles<B>& boundary, const FluidParameters& params,
-                          NeighborWalk walk) {
+                          const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
+                          const FluidParameters& params, NeighborWalk walk) {
   if (params.surfaceTension > 0.0f) {
-    forcePassWithKernels<B, ForceOptions<kForm, kViscosity, true, kPressure>>(fluid, grid, boundary,
-                                                                              params, walk);
+    forcePassWithKernels<B, ForceOptions<kForm, kViscosity, true, kPressure>>(
+        fluid, grid, boundary, objects, params, walk);
   } else {
     forcePassWithKernels<B, ForceOptions<kForm, kViscosity, false, kPressure>>(
-        fluid, grid, boundary, params, walk);
+        fluid, grid, boundary, objects, params, walk);
   }
 }
 
 template <class B, PressureForm kForm, bool kPressure = true>
 void forcePassWithViscosity(FluidParticles<B>& fluid, const Grid<B>& grid,
-                            const BoundaryParticles<B>& boundary, const FluidParameters& params,
+                            const BoundaryParticles<B>& boundary,
+                            const BoundaryParticles<B>& objects, const FluidParameters& params,
                             NeighborWalk walk) {
   if (params.viscosityModel == ViscosityModel::Artificial) {
     forcePassWithTension<B, kForm, ViscosityModel::Artificial, kPressure>(fluid, grid, boundary,
-                                                                          params, walk);
+                                                                          objects, params, walk);
   } else {
-    forcePassWithTension<B, kForm, ViscosityModel::Muller, kPressure>(fluid, grid, boundary, params,
-                                                                      walk);
+    forcePassWithTension<B, kForm, ViscosityModel::Muller, kPressure>(fluid, grid, boundary,
+                                                                      objects, params, walk);
   }
 }
 
 }  // namespace detail
 
+// objects: the objects' particles as boundary particles (interaction.coupling "boundary"), or
+// none.
 template <class B>
 void computeForces(FluidParticles<B>& fluid, const Grid<B>& grid,
-                   const BoundaryParticles<B>& boundary, const FluidParameters& params,
-                   NeighborWalk walk) {
+                   const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
+                   const FluidParameters& params, NeighborWalk walk) {
   if (!params.pressureForces) {
-    detail::forcePassWithViscosity<B, PressureForm::Symmetric, false>(fluid, grid, boundary, params,
-                                                                      walk);
+    detail::forcePassWithViscosity<B, PressureForm::Symmetric, false>(fluid, grid, boundary,
+                                                                      objects, params, walk);
   } else if (params.pressureForm == PressureForm::Symmetric) {
-    detail::forcePassWithViscosity<B, PressureForm::Symmetric>(fluid, grid, boundary, params, walk);
+    detail::forcePassWithViscosity<B, PressureForm::Symmetric>(fluid, grid, boundary, objects,
+                                                               params, walk);
   } else {
-    detail::forcePassWithViscosity<B, PressureForm::Paper>(fluid, grid, boundary, params, walk);
+    detail::forcePassWithViscosity<B, PressureForm::Paper>(fluid, grid, boundary, objects, params,
+                                                           walk);
   }
 }
 

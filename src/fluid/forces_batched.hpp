@@ -19,7 +19,8 @@ struct ForceRecord {
 
 template <class Options, class Kernels>
 void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>& grid,
-                      const BoundaryParticles<CpuBackend>& boundary, const FluidParameters& params,
+                      const BoundaryParticles<CpuBackend>& boundary,
+                      const BoundaryParticles<CpuBackend>& objects, const FluidParameters& params,
                       Kernels kernels) {
   using R = ForceRecord;
   const std::size_t n = fluid.count;
@@ -61,6 +62,8 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
 
   const NeighborLists lists = neighborLists(fluid, grid);
   const BoundaryBatches walls = boundaryBatches(boundary);
+  const BoundaryBatches objectWalls = boundaryBatches(objects);
+  const Vec4* objectVelocity = objects.velocity.data();  // padded with zeros
   const Vec4* state = fluid.pressureState.data();
   Vec4* acceleration = fluid.acceleration.data();
   const std::uint32_t* id = fluid.id.data();
@@ -102,6 +105,13 @@ void forcePassBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>&
                              [&](const auto& pair, FloatBatch volume, std::uint32_t) {
                                terms.addWall(sums, pair, volume);
                              });
+    forEachBoundaryPairBatch(
+        objectWalls, xs, xi, h2, [&](const auto& pair, FloatBatch volume, std::uint32_t k) {
+          const BatchVec3 vk{FloatBatch([&](auto lane) { return objectVelocity[k + lane].x; }),
+                             FloatBatch([&](auto lane) { return objectVelocity[k + lane].y; }),
+                             FloatBatch([&](auto lane) { return objectVelocity[k + lane].z; })};
+          terms.addObject(sums, pair, volume, vk);
+        });
     const Vec3 extra = external ? xyz(external[id[i]]) : Vec3{0.0f, 0.0f, 0.0f};
     acceleration[i] = makeVec4(terms.total(sums, extra), 0.0f);
   });

@@ -137,6 +137,21 @@ struct ForceConstants {
         gravity(spread<V>(params.gravity)) {}
 };
 
+// The viscous acceleration of fluid particle i (density ρ_i) from a boundary particle of mass
+// m_b = ρ0 ψ_b whose velocity is v_i - vRel: the fluid's viscosity, with the boundary particle
+// standing for fluid at rest density.
+template <bool kArtificial, class S, class V, class M, class Kernels>
+SPH_HD_INLINE V boundaryFriction(const ForceConstants<S, V, Kernels>& c, S densityI, S massB,
+                                 const V& vRel, const Pair<S, V, M>& pair, const V& gradW) {
+  if constexpr (kArtificial) {
+    return artificialViscosityAcceleration(c.viscosity, c.soundSpeed, c.h, massB, densityI,
+                                           c.restDensity, vRel, pair.rij, pair.r2, gradW);
+  } else {
+    return mullerViscosityAcceleration(c.viscosity, massB, densityI, c.restDensity, vRel,
+                                       pair.where(c.kernels.laplacian(pair.r)));
+  }
+}
+
 // The acceleration of particle i (Meteer 2011, Algorithm 2): pressure and viscosity from each
 // fluid neighbour, the walls' pressure and friction (Akinci et al. 2012), surface tension.
 template <class S, class V, class Options, class Kernels>
@@ -208,19 +223,21 @@ struct ForceTerms {
       const S pB = wallPressure(S(0.0f), densityI, c.gravity, -pair.rij, true);
       a += boundaryPressureAcceleration(massB, S(0.0f), densityI, pB, gradW);
     }
-    if (c.p.wallFriction > 0.0f) {
-      V friction;
-      if constexpr (kArtificial) {
-        friction = artificialViscosityAcceleration(c.viscosity, c.soundSpeed, c.h, massB, densityI,
-                                                   c.restDensity, vi, pair.rij, pair.r2, gradW);
-      } else {
-        friction = mullerViscosityAcceleration(c.viscosity, massB, densityI, c.restDensity, vi,
-                                               pair.where(c.kernels.laplacian(pair.r)));
-      }
-      a += friction * c.wallFriction;
-    }
+    if (c.p.wallFriction > 0.0f)
+      a += boundaryFriction<kArtificial>(c, densityI, massB, vi, pair, gradW) * c.wallFriction;
     if constexpr (Options::surfaceTension)
       sums.colourGradient += colourGradientTerm(c.kernels, pair, volumeB);
+  }
+
+  // An object's particle as a boundary particle of the incompressible solver (interaction
+  // coupling "boundary"): the solve gives its pressure; here the fluid's own viscosity against
+  // the particle's motion, which interaction/boundary_forces.hpp gives the object back.
+  template <class M>
+  SPH_HD_INLINE void addObject(Sums& sums, const Pair<S, V, M>& pair, S volumeB,
+                               const V& velocityB) const {
+    const V gradW = pair.rij * pair.where(c.kernels.gradFactor(pair.r));
+    sums.acceleration += boundaryFriction<kArtificial>(c, densityI, c.restDensity * volumeB,
+                                                       vi - velocityB, pair, gradW);
   }
 
   // The pair sums with gravity, the embedding application's acceleration and surface tension.

@@ -29,6 +29,7 @@ extern template void integrateDensity<CpuBackend>(FluidParticles<CpuBackend>&,
 // cpu_stages_forces.cpp
 extern template void computeForces<CpuBackend>(FluidParticles<CpuBackend>&, const Grid<CpuBackend>&,
                                                const BoundaryParticles<CpuBackend>&,
+                                               const BoundaryParticles<CpuBackend>&,
                                                const FluidParameters&, NeighborWalk);
 extern template void wallForces<CpuBackend>(const FluidParticles<CpuBackend>&,
                                             const Grid<CpuBackend>&,

@@ -5,6 +5,7 @@ namespace sph::fluid {
 
 template void computeForces<CpuBackend>(FluidParticles<CpuBackend>&, const Grid<CpuBackend>&,
                                         const BoundaryParticles<CpuBackend>&,
+                                        const BoundaryParticles<CpuBackend>&,
                                         const FluidParameters&, NeighborWalk);
 template void wallForces<CpuBackend>(const FluidParticles<CpuBackend>&, const Grid<CpuBackend>&,
                                      const BoundaryParticles<CpuBackend>&, const FluidParameters&,

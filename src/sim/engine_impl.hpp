@@ -125,7 +125,9 @@ class EngineImpl final : public FluidEngine {
   void computeDensityAndPressure() override {
     fluid::computeDensityAndPressure(fluid_, grid_, boundary_, objectBoundary_, params_, walk_);
   }
-  void computeForces() override { fluid::computeForces(fluid_, grid_, boundary_, params_, walk_); }
+  void computeForces() override {
+    fluid::computeForces(fluid_, grid_, boundary_, objectBoundary_, params_, walk_);
+  }
   void prepareSolver() override { fluid::prepareSolver(fluid_); }
   void integrateDensity(float dt) override {
     fluid::integrateDensity(fluid_, grid_, boundary_, params_, dt, walk_);

@@ -179,7 +179,8 @@ TEST_P(FluidStages, TheForcePassesPairTermsCancelAcrossTheFluid) {
   for (ViscosityModel viscosity : {ViscosityModel::Artificial, ViscosityModel::Muller}) {
     Fluid fluid(lattice, KernelKind::CubicSpline, viscosity);
     fluid.densityPass(GetParam());
-    computeForces(fluid.particles, fluid.grid, fluid.walls, fluid.params, GetParam());
+    computeForces(fluid.particles, fluid.grid, fluid.walls, fluid.objects, fluid.params,
+                  GetParam());
     const Imbalance imbalance = accelerationImbalance(fluid.particles);
     ASSERT_GT(imbalance.magnitude, 1.0);
     for (double share : imbalance.axis) EXPECT_LT(share, 1e-6);  // float rounding

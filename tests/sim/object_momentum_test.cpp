@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 #include "backends.hpp"
 #include "sph/simulation.hpp"
@@ -102,6 +103,72 @@ TEST_P(ObjectMomentum, FluidAndRigidBodyConserveLinearMomentumAsBoundaryParticle
   scene.fluid.kernel = KernelKind::CubicSpline;
   scene.interaction.coupling = ObjectCoupling::Boundary;
   expectMomentumConserved(scene, GetParam());
+}
+
+// A plate sliding along its own plane through still fluid, gravity off, as boundary particles:
+// what moves the fluid is its leading edge's pressure and, along its faces, the fluid's
+// viscosity against its particles. Each step the plate feels the opposite of what it gives.
+struct SlidingPlate {
+  double fluidMomentum = 0.0;  // x, kg m/s
+  double plateImpulse = 0.0;   // Σ F_x dt of the fluid on the plate, N s
+  double scale = 0.0;          // Σ m|v| of the fluid
+};
+
+SlidingPlate slidePlate(Backend backend, double viscosity) {
+  Scene s;
+  s.name = "sliding_plate";
+  s.sourcePath = "sliding_plate (test)";
+  s.gravity = {0, 0, 0};
+  s.fluid.spacing = 0.01;
+  s.fluid.viscosity = viscosity;
+  s.fluid.solver = FluidSolver::Dfsph;
+  s.fluid.kernel = KernelKind::CubicSpline;
+  s.interaction.coupling = ObjectCoupling::Boundary;
+  s.domain.box = {{-1, -1, -1}, {1, 1, 1}};
+  FluidBlock block;
+  block.box = {{-0.16, -0.07, -0.07}, {0.16, 0.07, 0.07}};
+  s.fluid.blocks.push_back(block);
+  ObjectDesc plate;
+  plate.name = "plate";
+  plate.motion = ObjectMotion::Kinematic;
+  plate.shape.kind = ShapeKind::Box;
+  plate.shape.center = {-0.04, 0.0, 0.0};
+  plate.shape.halfExtents = {0.06, 0.01, 0.05};
+  plate.keyframes = {KeyframeDesc{0.0, {0, 0, 0}, {0, 0, 0}},
+                     KeyframeDesc{1.0, {0.5, 0, 0}, {0, 0, 0}}};
+  s.objects.push_back(plate);
+  s.calibration.maxExpectedSpeed = 1.0;
+  Simulation sim(s, testing::on(backend));
+  SlidingPlate out;
+  while (sim.time() < 0.1) {
+    const double before = sim.time();
+    sim.step();
+    out.plateImpulse += sim.objectStats()[0].fluidForce[0] * (sim.time() - before);
+  }
+  const ParticleFrame f = sim.frame(false);
+  const double m = sim.calibration().mass;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (f.kind[i] != static_cast<std::uint8_t>(ParticleKind::Fluid)) continue;
+    out.fluidMomentum += m * f.velocity[3 * i];
+    out.scale += m * std::sqrt(double(f.velocity[3 * i]) * f.velocity[3 * i] +
+                               double(f.velocity[3 * i + 1]) * f.velocity[3 * i + 1] +
+                               double(f.velocity[3 * i + 2]) * f.velocity[3 * i + 2]);
+  }
+  return out;
+}
+
+TEST_P(ObjectMomentum, ASlidingPlateDragsTheFluidByItsViscosityAndFeelsTheOpposite) {
+  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
+  if (testing::kSanitized) GTEST_SKIP() << "the Release build's figures";
+  const SlidingPlate viscous = slidePlate(GetParam(), 0.5);
+  const SlidingPlate inviscid = slidePlate(GetParam(), 0.0);
+  std::printf("fluid momentum %.3e (viscous) %.3e (inviscid) kg m/s; plate impulse %.3e %.3e N s\n",
+              viscous.fluidMomentum, inviscid.fluidMomentum, viscous.plateImpulse,
+              inviscid.plateImpulse);
+  EXPECT_GT(inviscid.fluidMomentum, 0.0);
+  EXPECT_GT(viscous.fluidMomentum, 1.5 * inviscid.fluidMomentum);
+  for (const SlidingPlate& run : {viscous, inviscid})
+    EXPECT_NEAR(run.fluidMomentum, -run.plateImpulse, 1e-5 * run.scale);
 }
 
 SPH_ON_EVERY_BACKEND(ObjectMomentum);
