@@ -23,24 +23,30 @@ namespace sph::interaction {
 
 namespace detail {
 
-// A named template, not a generic lambda: nvcc's device lambdas may not sit inside one.
-template <class B, class Kernels>
+// Both forces in one walk over each boundary particle's fluid neighbours. A named template, not
+// a generic lambda: nvcc's device lambdas may not sit inside one.
+template <bool kArtificial, class B, class Kernels>
 void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::Grid<B>& grid,
                            const fluid::BoundaryParticles<B>& boundary, ObjectParticles<B>& objects,
                            const fluid::FluidParameters& params, Kernels kernels) {
   const GridSpec spec = grid.spec;
   const std::uint32_t* cellStart = grid.cellStart.data();
   const Vec4* position = fluid.position.data();
+  const Vec4* velocity = fluid.velocity.data();
   const float* pressure = fluid.pressure.data();
   const float* density = fluid.density.data();
+  const Vec4* state = fluid.pressureState.data();
   const Vec4* particle = boundary.position.data();  // w: ψ_k
-  const std::uint32_t* twin = boundary.id.data();   // its index in ObjectParticles
+  const Vec4* particleVelocity = boundary.velocity.data();
+  const std::uint32_t* twin = boundary.id.data();  // its index in ObjectParticles
   Vec4* force = objects.force.data();
+  const fluid::ForceConstants<float, Vec3, Kernels> constants(params, kernels);
   const float h2 = params.h * params.h;
   const float mass = params.mass, restDensity = params.restDensity;
   B::forEach(
       boundary.count, SPH_LAMBDA(std::size_t k) {
         const Vec4 xk = particle[k];
+        const Vec3 vk = xyz(particleVelocity[k]);
         const float volumeMass = restDensity * xk.w;  // ρ0 ψ_k
         Vec3 sum{0.0f, 0.0f, 0.0f};                   // Σ_i of a_ik, the fluid's acceleration
         float near = 0.0f;
@@ -48,10 +54,14 @@ void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::G
           const Vec3 rik = xyz(readOnly(position + i)) - xyz(xk);
           const float r2 = lengthSquared(rik);
           if (r2 >= h2 || r2 <= 0.0f) return;
+          const auto pair = fluid::makePair(rik, r2, true, h2);
+          const Vec3 gradW = pair.rij * pair.where(kernels.gradFactor(pair.r));
           const float ki =
               pressureOverDensitySquared(readOnly(pressure + i), readOnly(density + i));
-          sum += pressureAccelerationSymmetric(volumeMass, ki, ki,
-                                               rik * kernels.gradFactor(realSqrt(r2)));
+          sum += pressureAccelerationSymmetric(volumeMass, ki, ki, gradW);
+          const float densityI = fluid::unpackPressureState(readOnly(state + i)).density;
+          sum += fluid::boundaryFriction<kArtificial>(
+              constants, densityI, volumeMass, xyz(readOnly(velocity + i)) - vk, pair, gradW);
           near += 1.0f;
         });
         const Vec4 f = force[twin[k]];
@@ -61,46 +71,6 @@ void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::G
 
 }  // namespace detail
 
-// The fluid's viscous force on each boundary particle: the opposite of what the force pass gave
-// the fluid through it (fluid::ForceTerms::addObject), with the same function and arguments,
-// added to out[twin[k]].
-template <bool kArtificial, class B, class Kernels>
-void addBoundaryFriction(const fluid::FluidParticles<B>& fluid, const fluid::Grid<B>& grid,
-                         const fluid::BoundaryParticles<B>& boundary,
-                         const fluid::FluidParameters& params, Kernels kernels, Vec4* out) {
-  const GridSpec spec = grid.spec;
-  const std::uint32_t* cellStart = grid.cellStart.data();
-  const Vec4* position = fluid.position.data();
-  const Vec4* velocity = fluid.velocity.data();
-  const Vec4* state = fluid.pressureState.data();
-  const Vec4* particle = boundary.position.data();  // w: ψ_k
-  const Vec4* particleVelocity = boundary.velocity.data();
-  const std::uint32_t* twin = boundary.id.data();
-  const fluid::ForceConstants<float, Vec3, Kernels> constants(params, kernels);
-  const float h2 = params.h * params.h;
-  const float mass = params.mass, restDensity = params.restDensity;
-  B::forEach(
-      boundary.count, SPH_LAMBDA(std::size_t k) {
-        const Vec4 xk = particle[k];
-        const Vec3 vk = xyz(particleVelocity[k]);
-        const float massK = restDensity * xk.w;  // ρ0 ψ_k
-        Vec3 sum{0.0f, 0.0f, 0.0f};              // Σ_i of a_ik, the fluid's acceleration
-        fluid::forEachNeighbor(spec, cellStart, xyz(xk), [&](std::uint32_t i) {
-          const Vec3 rik = xyz(readOnly(position + i)) - xyz(xk);
-          const float r2 = lengthSquared(rik);
-          if (r2 >= h2 || r2 <= 0.0f) return;
-          const auto pair = fluid::makePair(rik, r2, true, h2);
-          const Vec3 gradW = pair.rij * pair.where(kernels.gradFactor(pair.r));
-          const float densityI = fluid::unpackPressureState(readOnly(state + i)).density;
-          sum += fluid::boundaryFriction<kArtificial>(
-              constants, densityI, massK, xyz(readOnly(velocity + i)) - vk, pair, gradW);
-        });
-        const Vec4 f = out[twin[k]];
-        out[twin[k]] = makeVec4(xyz(f) - sum * mass, f.w);
-      });
-}
-
-// Both: the solves' pressure and the force pass's viscosity.
 template <class B>
 void addBoundaryForces(const fluid::FluidParticles<B>& fluid, const fluid::Grid<B>& grid,
                        const fluid::BoundaryParticles<B>& boundary, ObjectParticles<B>& objects,
@@ -108,11 +78,10 @@ void addBoundaryForces(const fluid::FluidParticles<B>& fluid, const fluid::Grid<
   if (boundary.count == 0 || fluid.count == 0) return;
   const bool artificial = params.viscosityModel == ViscosityModel::Artificial;
   fluid::withKernels(params, [&](auto kernels) {
-    detail::addBoundaryForcesWith(fluid, grid, boundary, objects, params, kernels);
     if (artificial)
-      addBoundaryFriction<true>(fluid, grid, boundary, params, kernels, objects.force.data());
+      detail::addBoundaryForcesWith<true>(fluid, grid, boundary, objects, params, kernels);
     else
-      addBoundaryFriction<false>(fluid, grid, boundary, params, kernels, objects.force.data());
+      detail::addBoundaryForcesWith<false>(fluid, grid, boundary, objects, params, kernels);
   });
 }
 

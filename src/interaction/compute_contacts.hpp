@@ -86,7 +86,8 @@ std::size_t computeContacts(fluid::FluidParticles<B>& fluid, const fluid::Grid<B
         const float reach2 = objectGrid.cellSize * objectGrid.cellSize;
         float sideSum = 0.0f, weightSum = 0.0f;
         int sideCount = 0;
-        if (fluid::nearGrid(objectGrid, xi)) {
+        // With boundary coupling the walk is only for containment: none for a free particle.
+        if ((!p.boundary || container >= 0) && fluid::nearGrid(objectGrid, xi)) {
           const Vec3 vi = xyz(velocity[i]);
           fluid::forEachNeighborWithin(
               objectGrid, objectCellStart, xi, objectGrid.cellSize, [&](std::uint32_t o) {
