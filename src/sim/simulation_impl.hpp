@@ -433,6 +433,8 @@ struct Simulation::Impl {
       s.minIterations = s.maxIterations = 0;
     s.warmStart = d.warmStart;
     s.coarseShare = float(d.coarseCorrection);
+    // Only the density solve: in the divergence solve it gained nothing.
+    if (target == fluid::SolverTarget::RestDensity) s.chebyshev = float(d.chebyshev);
     // Six tenths of a full neighbourhood on the initial lattice: (4/3) π (h/d)³ neighbours.
     const double ratio = scene.fluid.supportRatio;
     s.minNeighbours = std::uint32_t(std::lround(0.6 * 4.0 / 3.0 * kPi * ratio * ratio * ratio));
