@@ -114,12 +114,13 @@ struct SlidingPlate {
   double scale = 0.0;          // Σ m|v| of the fluid
 };
 
-SlidingPlate slidePlate(Backend backend, double viscosity) {
+SlidingPlate slidePlate(Backend backend, ViscosityModel model, double viscosity) {
   Scene s;
   s.name = "sliding_plate";
   s.sourcePath = "sliding_plate (test)";
   s.gravity = {0, 0, 0};
   s.fluid.spacing = 0.01;
+  s.fluid.viscosityModel = model;
   s.fluid.viscosity = viscosity;
   s.fluid.solver = FluidSolver::Dfsph;
   s.fluid.kernel = KernelKind::CubicSpline;
@@ -160,14 +161,16 @@ SlidingPlate slidePlate(Backend backend, double viscosity) {
 TEST_P(ObjectMomentum, ASlidingPlateDragsTheFluidByItsViscosityAndFeelsTheOpposite) {
   SPH_SKIP_UNLESS_AVAILABLE(GetParam());
   if (testing::kSanitized) GTEST_SKIP() << "the Release build's figures";
-  const SlidingPlate viscous = slidePlate(GetParam(), 0.5);
-  const SlidingPlate inviscid = slidePlate(GetParam(), 0.0);
-  std::printf("fluid momentum %.3e (viscous) %.3e (inviscid) kg m/s; plate impulse %.3e %.3e N s\n",
-              viscous.fluidMomentum, inviscid.fluidMomentum, viscous.plateImpulse,
-              inviscid.plateImpulse);
+  // Monaghan's α and Müller's μ (Pa s), each against the inviscid run.
+  const SlidingPlate inviscid = slidePlate(GetParam(), ViscosityModel::Artificial, 0.0);
+  const SlidingPlate artificial = slidePlate(GetParam(), ViscosityModel::Artificial, 0.5);
+  const SlidingPlate muller = slidePlate(GetParam(), ViscosityModel::Muller, 3.0);
+  std::printf("fluid momentum %.3e (alpha 0.5) %.3e (mu 3 Pa s) %.3e (inviscid) kg m/s\n",
+              artificial.fluidMomentum, muller.fluidMomentum, inviscid.fluidMomentum);
   EXPECT_GT(inviscid.fluidMomentum, 0.0);
-  EXPECT_GT(viscous.fluidMomentum, 1.5 * inviscid.fluidMomentum);
-  for (const SlidingPlate& run : {viscous, inviscid})
+  EXPECT_GT(artificial.fluidMomentum, 1.5 * inviscid.fluidMomentum);
+  EXPECT_GT(muller.fluidMomentum, 1.5 * inviscid.fluidMomentum);
+  for (const SlidingPlate& run : {inviscid, artificial, muller})
     EXPECT_NEAR(run.fluidMomentum, -run.plateImpulse, 1e-5 * run.scale);
 }
 
