@@ -103,7 +103,8 @@ struct RatePass {
   std::uint64_t* error;
   float* signedError;  // e_i before it is counted: what the coarse level averages
   float omega;         // Chebyshev's weight this iteration (1: plain Jacobi; dfsph_solve.hpp)
-  float* lastK;        // the K the last iteration applied; this one's is written
+  float* lastK;        // with Chebyshev: the K the last iteration applied, this one's written;
+                       // null without it
 
   // A particle the divergence solve corrects: one with a full neighbourhood, of fluid or of
   // fluid and walls (a particle against a wall has half the fluid neighbours, and its density).
@@ -134,8 +135,11 @@ struct RatePass {
     const float counted = e > 0.0f ? e : 0.0f;
     signedError[i] = e;
     const float k = dfsphStiffness(counted, factor[i], restDensity, dt);
-    const float applied = omega == 1.0f ? k : omega * k + (omega - 1.0f) * lastK[i];
-    lastK[i] = applied;
+    float applied = k;
+    if (lastK != nullptr) {
+      if (omega != 1.0f) applied = omega * k + (omega - 1.0f) * lastK[i];
+      lastK[i] = applied;
+    }
     stiffnessRecords[kRecordFields * i + SolverRecord::kK] = applied;
     // The fixed point's range: 16 × 2³² a particle leaves room in 64 bits for 2³⁸ particles.
     const float clamped = counted < 16.0f ? counted : 16.0f;

@@ -35,7 +35,6 @@ void prepareSolver(FluidParticles<B>& fluid) {
   fluid.solverTotal.resize(n);
   fluid.solverError.resize(n);
   fluid.solverSignedError.resize(n);
-  fluid.solverLastK.resize(n);
   const bool keep = n * fluid.neighborStride * sizeof(float) <= kKeptGradientBytes;
   fluid.pairGradient.resize(keep ? n * fluid.neighborStride : 0);
   if (fluid.warmStart.size() < n) {
@@ -195,7 +194,11 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
                 fluid.solverError.data(),
                 fluid.solverSignedError.data(),
                 1.0f,
-                fluid.solverLastK.data()};
+                nullptr};
+  if (settings.chebyshev > 0.0f) {
+    fluid.solverLastK.resize(fluid.count);
+    rate.lastK = fluid.solverLastK.data();
+  }
   const VelocityPass correct{params.mass,
                              params.restDensity,
                              dt,
