@@ -1,5 +1,6 @@
 #include "interaction/object_volumes.hpp"
 
+#include "backend/cpu_parallel.hpp"
 #include "fluid/kernel_dispatch.hpp"
 #include "fluid/neighbors.hpp"
 
@@ -12,7 +13,7 @@ std::vector<Vec4> withObjectVolumes(const std::vector<Vec4>& position,
   std::vector<Vec4> out(n);
   const float h2 = params.h * params.h;
   fluid::withKernels(params, [&](auto kernels) {
-    for (std::size_t k = 0; k < n; ++k) {
+    backend::forEach(n, [&](std::size_t k) {
       const Vec3 xk = xyz(position[k]);
       float density = 0.0f;  // Σ_l W_kl, itself included
       fluid::forEachNeighbor(grid, cellStart.data(), xk, [&](std::uint32_t l) {
@@ -20,7 +21,7 @@ std::vector<Vec4> withObjectVolumes(const std::vector<Vec4>& position,
         if (r2 < h2) density += kernels.W(r2);
       });
       out[k] = makeVec4(xk, 1.0f / density);
-    }
+    });
   });
   return out;
 }

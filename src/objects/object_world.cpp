@@ -13,6 +13,7 @@
 #include "objects/rigid_body.hpp"
 #include "objects/shape_sampling.hpp"
 #include "objects/springs.hpp"
+#include "objects/volume_constraint.hpp"
 #include "objects/xpbd.hpp"
 #include "sph/core/constants.hpp"
 #include "sph/core/time_step.hpp"
@@ -116,8 +117,9 @@ struct ObjectWorld::Impl {
   std::vector<Object> objects;
   std::vector<RigidBody> rigid;
   std::vector<SpringNetwork> networks;
-  std::vector<DeformableModel> models;  // per network
-  std::vector<XpbdConstraints> xpbd;    // per network; unused under the springs model
+  std::vector<DeformableModel> models;    // per network
+  std::vector<XpbdConstraints> xpbd;      // per network; unused under the springs model
+  std::vector<VolumeConstraint> volumes;  // of the liquid-filled deformables
   std::vector<KinematicPath> paths;
 
   // Stability data, fixed at build time.
@@ -145,6 +147,7 @@ struct ObjectWorld::Impl {
   void substep(double h, const std::vector<Vec3>& externalForce);
   ContactParticles contactParticles() const;
   StaticParticles staticParticles() const;
+  void keepVolumes();
   void projectXpbd(double h);
   void addContactImpulses(double h);
   void integrateDeformable(const SpringNetwork& net, double h);
@@ -413,10 +416,28 @@ void ObjectWorld::Impl::substep(double h, const std::vector<Vec3>& externalForce
   projectXpbd(h);
 }
 
+void ObjectWorld::Impl::keepVolumes() {
+  for (std::size_t o : settings.liquidFilled) {
+    const Object& object = objects.at(o);
+    if (object.motion != ObjectMotion::Deformable || models[object.body] != DeformableModel::Xpbd ||
+        !object.shape.enclosesVolume)
+      continue;
+    std::vector<std::uint32_t> surface;
+    for (std::size_t i = object.first; i < object.first + object.count; ++i)
+      if (published.surface[i]) surface.push_back(std::uint32_t(i));
+    const SpringNetwork& net = networks[object.body];
+    volumes.push_back(makeVolumeConstraint(
+        o, object.body, std::move(surface), enclosedVolume(object.shape.desc, object.shape),
+        position, published.normal, net.first, net.neighbourStart, net.neighbours));
+  }
+}
+
 void ObjectWorld::Impl::projectXpbd(double h) {
   if (lightestProjectedMass == std::numeric_limits<double>::infinity()) return;
   for (std::size_t b = 0; b < networks.size(); ++b)
     if (models[b] == DeformableModel::Xpbd) xpbdProject(networks[b], xpbd[b], h, position);
+  for (const VolumeConstraint& v : volumes)
+    if (networks[v.network].brokenCount == 0) projectVolume(v, inverseMass, position);
   const StaticParticles walls = staticParticles();
   if (contactsPossible) {
     selectTouching(position, published.radius, walls, contactConstraints);
@@ -524,6 +545,7 @@ ObjectWorld::ObjectWorld(const std::vector<ObjectDesc>& objects, const WorldSett
   w.contactsPossible = (objects.size() >= 2 || !w.statics.empty()) && anyMovable &&
                        (k.spring > 0.0f || k.damping > 0.0f || k.shear > 0.0f);
   w.publish();
+  w.keepVolumes();  // from the normals just published
 }
 
 ObjectWorld::~ObjectWorld() = default;
@@ -593,6 +615,7 @@ void ObjectWorld::step(double dt, const std::vector<Vec3>& externalForce) {
   const double start = w.time, h = dt / double(substeps);
   std::fill(w.contactImpulse.begin(), w.contactImpulse.end(), DVec3{});
   w.findContactCandidates(dt);
+  for (VolumeConstraint& v : w.volumes) beginVolumeStep(v, w.position, w.published.normal);
   for (std::size_t s = 0; s < substeps; ++s) w.substep(h, externalForce);
   w.time = start + dt;  // no drift from summing h
   for (std::size_t o = 0; o < w.objects.size(); ++o) w.contactForce[o] = w.contactImpulse[o] / dt;

@@ -30,6 +30,9 @@ struct WorldSettings {
   // piece torn off and falling away, bounds no substep with its speed.
   Vec3 regionMin{-3.0e38f, -3.0e38f, -3.0e38f};
   Vec3 regionMax{3.0e38f, 3.0e38f, 3.0e38f};
+  // Objects filled with an incompressible liquid, by index: each one that is a closed XPBD
+  // deformable keeps the volume it encloses until it tears (volume_constraint.hpp).
+  std::vector<std::size_t> liquidFilled;
   std::string sceneFolder;  // mesh files are resolved against it
   std::string sourceName;   // the scene file, for error messages
 };
@@ -76,8 +79,8 @@ struct WorldState {
   std::vector<std::uint8_t> cut;           // per particle
   // Per rigid body: centre of mass, velocity, orientation (w, x, y, z), body angular velocity.
   std::vector<double> bodies;
-  std::vector<std::uint8_t> springBroken;   // every network's springs, in order
-  std::vector<std::uint8_t> bendingBroken;  // every XPBD network's triples, in order
+  std::vector<std::uint8_t> springBroken;    // every network's springs, in order
+  std::vector<std::uint8_t> bendingBroken;   // every XPBD network's triples, in order
   std::vector<std::uint64_t> pathKeyCounts;  // per kinematic path
   std::vector<KeyframeDesc> pathKeys;        // their keyframes, one path after another
 };

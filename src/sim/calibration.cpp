@@ -158,6 +158,15 @@ objects::WorldSettings worldSettings(const Scene& scene, const Calibration& c) {
   const AxisBox& domain = scene.domain.box;
   w.regionMin = Vec3{float(domain.min[0]), float(domain.min[1]), float(domain.min[2])};
   w.regionMax = Vec3{float(domain.max[0]), float(domain.max[1]), float(domain.max[2])};
+  // Under boundary coupling the fluid is incompressible and its solve holds the objects still:
+  // a vessel it fills must keep its volume by itself (objects/volume_constraint.hpp). Under
+  // contact coupling the weakly compressible fluid's pressure tells the vessel.
+  if (scene.interaction.coupling == ObjectCoupling::Boundary)
+    for (const FluidBlock& block : scene.fluid.blocks)
+      for (std::size_t o = 0; o < scene.objects.size(); ++o)
+        if (!block.inside.empty() && scene.objects[o].name == block.inside &&
+            std::find(w.liquidFilled.begin(), w.liquidFilled.end(), o) == w.liquidFilled.end())
+          w.liquidFilled.push_back(o);
   w.sourceName = scene.sourcePath;
   w.sceneFolder = std::filesystem::path(scene.sourcePath).parent_path().string();
   return w;
