@@ -191,18 +191,37 @@ void PrintTo(const SqueezeVariant& variant, std::ostream* out) {
 
 class ArteryVariants : public ::testing::TestWithParam<SqueezeVariant> {};
 
-TEST_P(ArteryVariants, SqueezedTheVesselLeaksNothing) {
-  Scene scene = scene::loadScene(scenePath("artery_squeeze.json"));
-  GetParam().change(scene);
+void expectTheSqueezedVesselLeaksNothing(const Scene& scene, const SqueezeVariant& variant) {
   Simulation sim(scene);
   ASSERT_EQ(sim.leakedCount(), 0u);
-  const SqueezeResult r = squeeze(sim, 0.4, GetParam().sanitizedUntil);
+  const SqueezeResult r = squeeze(sim, 0.4, variant.sanitizedUntil);
   EXPECT_EQ(r.maxLeaked, 0u);
   EXPECT_EQ(sim.removedCount(), 0u);
   EXPECT_EQ(sim.fluidCount(), r.fluid);
   if (!testing::kSanitized) {  // and the blood moves away from the clamps
-    EXPECT_GT(r.centreAfter - r.centreBefore, GetParam().centreShift);
+    EXPECT_GT(r.centreAfter - r.centreBefore, variant.centreShift);
   }
+}
+
+TEST_P(ArteryVariants, SqueezedTheVesselLeaksNothing) {
+  Scene scene = scene::loadScene(scenePath("artery_squeeze.json"));
+  GetParam().change(scene);
+  expectTheSqueezedVesselLeaksNothing(scene, GetParam());
+}
+
+// The same under the incompressible solver with the blood in its pressure solve (boundary
+// coupling). Twice the resolution, 28,704 particles, would take 45 s: not here. Shut, the leak
+// check itself errs: at 0.32 s it counts one particle out for 14 ms, at the clamp's edge 2 mm
+// inside both of the pressed walls, where the wall creases and the normals it reads the sides
+// from tilt (docs/interaction.md, "Leaks").
+TEST_P(ArteryVariants, SqueezedUnderDfsphTheVesselLeaksNothing) {
+  const std::string name = GetParam().name;
+  if (name == "twice_the_resolution" || name == "shut") GTEST_SKIP() << "see above";
+  Scene scene = scene::loadScene(scenePath("artery_squeeze.json"));
+  GetParam().change(scene);
+  scene.fluid.solver = FluidSolver::Dfsph;
+  scene.interaction.coupling = ObjectCoupling::Boundary;
+  expectTheSqueezedVesselLeaksNothing(scene, GetParam());
 }
 
 // The clamps close from 0.05 s to 0.35 s as shipped, 4.5 mm each.
@@ -265,6 +284,7 @@ TEST_P(ArteryTear, BloodLeavesThroughTheTearAndOnlyThere) {
   for (std::size_t k = 0; k < leaked; ++k)
     farthest = std::max(farthest, distanceToBox(tear, &exits[3 * k]));
   EXPECT_LT(farthest, tolerance) << "a particle left " << farthest << " m from the tear";
+  std::printf("  %zu particles left, the farthest %.2f mm from the tear\n", leaked, 1e3 * farthest);
 }
 
 SPH_ON_EVERY_BACKEND(ArteryTear);
