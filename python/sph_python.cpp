@@ -107,6 +107,7 @@ py::dict objectStats(const sph::ObjectStats& o) {
   out["fluid_force"] = o.fluidForce;
   out["contact_force"] = o.contactForce;
   out["broken_springs"] = o.brokenSprings;
+  out["volume_ratio"] = o.volumeRatio;  // 0 unless a liquid-filled vessel keeps its volume
   return out;
 }
 

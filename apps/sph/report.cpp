@@ -166,12 +166,14 @@ nlohmann::json flowJson(const std::vector<FlowStats>& flows) {
 nlohmann::json objectsJson(const std::vector<ObjectStats>& objects) {
   nlohmann::json out = nlohmann::json::array();
   for (const ObjectStats& o : objects) {
-    out.push_back({{"name", o.name},
-                   {"centre_of_mass", o.centreOfMass},
-                   {"velocity", o.velocity},
-                   {"fluid_force", o.fluidForce},
-                   {"contact_force", o.contactForce},
-                   {"broken_springs", o.brokenSprings}});
+    nlohmann::json object = {{"name", o.name},
+                             {"centre_of_mass", o.centreOfMass},
+                             {"velocity", o.velocity},
+                             {"fluid_force", o.fluidForce},
+                             {"contact_force", o.contactForce},
+                             {"broken_springs", o.brokenSprings}};
+    if (o.volumeRatio > 0.0) object["volume_ratio"] = o.volumeRatio;
+    out.push_back(object);
   }
   return out;
 }

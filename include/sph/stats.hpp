@@ -22,6 +22,9 @@ struct ObjectStats {
   // Its centre of mass as built: Simulation::steerObject's offsets are from here.
   std::array<double, 3> startCentre{0, 0, 0};
   std::uint64_t brokenSprings = 0;
+  // A vessel filled with incompressible fluid keeps the volume it encloses (boundary coupling):
+  // that volume over its shape's. 0 for any other object.
+  double volumeRatio = 0.0;
 };
 
 // The fluid an emitter has put in, or an outlet taken out, since the start.

@@ -595,6 +595,9 @@ ObjectInfo ObjectWorld::info(std::size_t object) const {
     info.springs = w.networks[o.body].springs.size();
     info.brokenSprings = w.networks[o.body].brokenCount;
   }
+  for (const VolumeConstraint& v : w.volumes)
+    if (v.object == object)
+      info.volumeRatio = enclosedVolume(v, w.position, w.published.normal) / v.restVolume;
   return info;
 }
 

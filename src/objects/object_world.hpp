@@ -62,6 +62,9 @@ struct ObjectInfo {
   Vec3 velocity{0, 0, 0};         // of the centre of mass, m/s
   std::size_t springs = 0;        // deformables (xpbd: distance constraints, not bending)
   std::size_t brokenSprings = 0;  // deformables, including those cut at the start
+  // A liquid-filled deformable that keeps its volume (WorldSettings::liquidFilled): the volume
+  // its outer particles enclose over the shape's; 0 for any other object.
+  double volumeRatio = 0.0;
   // The other objects' contact push on it, and the static particles' on a body that moves,
   // averaged over the last step (N): what a clamp squeezing a vessel feels. A kinematic object
   // feels the other objects' too, though it does not move for it.

@@ -143,6 +143,7 @@ std::vector<ObjectStats> Simulation::objectStats() const {
     stats.contactForce = {info.contactForce.x, info.contactForce.y, info.contactForce.z};
     stats.startCentre = {info.startCentre.x, info.startCentre.y, info.startCentre.z};
     stats.brokenSprings = info.brokenSprings;
+    stats.volumeRatio = info.volumeRatio;
     out.push_back(stats);
   }
   return out;

@@ -151,6 +151,9 @@ TEST_P(ArteryIncompressible, TheSqueezedVesselKeepsItsVolumeAndTheBloodStaysCalm
   // push out from between them moves at 0.1-0.2 m/s.
   EXPECT_LT(fastest99, 0.3);
   EXPECT_GT(fluidCentreX(sim) - centreBefore, 0.0005) << "the blood moves away from the clamps";
+  const ObjectStats vessel = sim.objectStats()[0];
+  std::printf("  the vessel encloses %.2f %% of its volume\n", 100.0 * vessel.volumeRatio);
+  EXPECT_NEAR(vessel.volumeRatio, 1.0, 0.01);
 }
 
 SPH_ON_EVERY_BACKEND(ArteryIncompressible);
