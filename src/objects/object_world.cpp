@@ -618,7 +618,8 @@ void ObjectWorld::step(double dt, const std::vector<Vec3>& externalForce) {
   const double start = w.time, h = dt / double(substeps);
   std::fill(w.contactImpulse.begin(), w.contactImpulse.end(), DVec3{});
   w.findContactCandidates(dt);
-  for (VolumeConstraint& v : w.volumes) beginVolumeStep(v, w.position, w.published.normal);
+  for (VolumeConstraint& v : w.volumes)
+    beginVolumeStep(v, w.position, w.published.normal, w.inverseMass);
   for (std::size_t s = 0; s < substeps; ++s) w.substep(h, externalForce);
   w.time = start + dt;  // no drift from summing h
   for (std::size_t o = 0; o < w.objects.size(); ++o) w.contactForce[o] = w.contactImpulse[o] / dt;

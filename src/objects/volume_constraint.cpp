@@ -19,13 +19,17 @@ double areaStretch(const VolumeConstraint& c, std::size_t m, const std::vector<D
   return sum / double(end - begin);
 }
 
+DVec3 centroid(const VolumeConstraint& c, const std::vector<DVec3>& position) {
+  DVec3 centre{0, 0, 0};
+  for (std::uint32_t i : c.surface) centre += position[i];
+  return centre / double(c.surface.size());
+}
+
 // (1/3) Σ_k (x_k − c) · n_k (A_k / A_rest).
 double volumePerRestArea(const VolumeConstraint& c, const std::vector<DVec3>& position,
                          const std::vector<Vec3>& normal) {
   if (c.surface.empty()) return 0.0;
-  DVec3 centre{0, 0, 0};
-  for (std::uint32_t i : c.surface) centre += position[i];
-  centre = centre / double(c.surface.size());
+  const DVec3 centre = centroid(c, position);
   double sum = 0.0;
   for (std::size_t m = 0; m < c.surface.size(); ++m) {
     const std::uint32_t i = c.surface[m];
@@ -46,13 +50,13 @@ VolumeConstraint makeVolumeConstraint(std::size_t object, std::size_t network,
   c.object = object;
   c.network = network;
   c.surface = std::move(surface);
-  const std::vector<std::uint32_t>& sorted = c.surface;  // ascending particle index
   c.neighbourStart.push_back(0);
   for (std::uint32_t i : c.surface) {
     const std::size_t k = i - first;
     for (std::uint32_t s = neighbourStart[k]; s < neighbourStart[k + 1]; ++s) {
       const std::uint32_t j = neighbours[s];
-      if (!std::binary_search(sorted.begin(), sorted.end(), j)) continue;
+      // The surface is in ascending particle index.
+      if (!std::binary_search(c.surface.begin(), c.surface.end(), j)) continue;
       const DVec3 d = position[j] - position[i];
       c.neighbour.push_back(j);
       c.restDistance2.push_back(dot(d, d));
@@ -71,14 +75,19 @@ double enclosedVolume(const VolumeConstraint& c, const std::vector<DVec3>& posit
 }
 
 void beginVolumeStep(VolumeConstraint& c, const std::vector<DVec3>& position,
-                     const std::vector<Vec3>& normal) {
-  c.startVolume = enclosedVolume(c, position, normal);
+                     const std::vector<Vec3>& normal, const std::vector<double>& inverseMass) {
   c.startPosition.resize(c.surface.size());
   c.gradient.resize(c.surface.size());
+  c.startVolume = 0.0;
+  c.weight = 0.0;
+  if (c.surface.empty()) return;
+  const DVec3 centre = centroid(c, position);
   for (std::size_t m = 0; m < c.surface.size(); ++m) {
     const std::uint32_t i = c.surface[m];
     c.startPosition[m] = position[i];
     c.gradient[m] = toD(normal[i]) * (c.restArea * areaStretch(c, m, position));
+    c.startVolume += dot(position[i] - centre, c.gradient[m]) / 3.0;  // enclosedVolume's sum
+    c.weight += inverseMass[i] * dot(c.gradient[m], c.gradient[m]);
   }
 }
 
@@ -91,11 +100,8 @@ double linearisedVolume(const VolumeConstraint& c, const std::vector<DVec3>& pos
 
 void projectVolume(const VolumeConstraint& c, const std::vector<double>& inverseMass,
                    std::vector<DVec3>& position) {
-  double weight = 0.0;
-  for (std::size_t m = 0; m < c.surface.size(); ++m)
-    weight += inverseMass[c.surface[m]] * dot(c.gradient[m], c.gradient[m]);
-  if (!(weight > 0.0)) return;
-  const double deltaLambda = -(linearisedVolume(c, position) - c.restVolume) / weight;
+  if (!(c.weight > 0.0)) return;
+  const double deltaLambda = -(linearisedVolume(c, position) - c.restVolume) / c.weight;
   for (std::size_t m = 0; m < c.surface.size(); ++m) {
     const std::uint32_t i = c.surface[m];
     position[i] += c.gradient[m] * (inverseMass[i] * deltaLambda);

@@ -34,6 +34,7 @@ struct VolumeConstraint {
   double startVolume = 0.0;          // V at the engine step's start
   std::vector<DVec3> startPosition;  // per outer particle, at the step's start
   std::vector<DVec3> gradient;       // A_k n_k per outer particle, at the step's start
+  double weight = 0.0;               // Σ w_k |∇_k C|², at the step's start
 };
 
 // The constraint of a closed shape of volume `volume` whose outer particles (`surface`) sit at
@@ -52,17 +53,17 @@ VolumeConstraint makeVolumeConstraint(std::size_t object, std::size_t network,
 double enclosedVolume(const VolumeConstraint& c, const std::vector<DVec3>& position,
                       const std::vector<Vec3>& normal);
 
-// At an engine step's start: the volume now, and the positions and gradients it is linear
-// about.
+// At an engine step's start: the volume now, the positions and gradients it is linear about,
+// and the projection's weight. `inverseMass` per particle index, 0 where pinned.
 void beginVolumeStep(VolumeConstraint& c, const std::vector<DVec3>& position,
-                     const std::vector<Vec3>& normal);
+                     const std::vector<Vec3>& normal, const std::vector<double>& inverseMass);
 
 // The volume the linearised constraint reads at `position`, m³.
 double linearisedVolume(const VolumeConstraint& c, const std::vector<DVec3>& position);
 
 // One XPBD projection with the multiplier from 0 and no compliance (the fluid is
-// incompressible): Δλ = −C / Σ w_k |∇_k C|², Δx_k = w_k ∇_k C Δλ. `inverseMass` per particle
-// index, 0 where pinned.
+// incompressible): Δλ = −C / Σ w_k |∇_k C|², Δx_k = w_k ∇_k C Δλ, with the weight of the
+// step's start (beginVolumeStep).
 void projectVolume(const VolumeConstraint& c, const std::vector<double>& inverseMass,
                    std::vector<DVec3>& position);
 
