@@ -10,6 +10,7 @@
 #include "backend/cpu_parallel.hpp"
 #include "interaction/object_particles.hpp"
 #include "interaction/prepare_object_boundary.hpp"
+#include "sph/core/periodic.hpp"
 #include "sph/object_exchange.hpp"
 
 namespace sph::interaction {
@@ -18,6 +19,53 @@ namespace sph::interaction {
 // be in), m/s: a torn piece falling away below it limits nothing.
 // With boundary coupling (params.boundary) also the same particles as the fluid's boundary
 // particles (prepare_object_boundary.hpp); else `boundary` is left empty.
+namespace detail {
+
+// x moved by whole periods into the domain along each periodic axis: an object is kept whole
+// by its engine, so its particles may lie any distance past a face.
+inline Vec3 intoPeriod(const Periodicity& p, Vec3 x) {
+  const auto wrap = [](float v, float lo, float length) {
+    const float w = v - length * std::floor((v - lo) / length);
+    return w < lo + length ? w : lo;
+  };
+  if (isPeriodic(p, 0)) x.x = wrap(x.x, p.lo.x, p.length.x);
+  if (isPeriodic(p, 1)) x.y = wrap(x.y, p.lo.y, p.length.y);
+  if (isPeriodic(p, 2)) x.z = wrap(x.z, p.lo.z, p.length.z);
+  return x;
+}
+
+// Calls add(x) for x, moved into the domain, and for each of its images (shifted by a period
+// along one axis or several) that lies within `reach` of the domain beyond the opposite face.
+template <class Add>
+void forEachImageInReach(const Periodicity& p, Vec3 x, float reach, Add&& add) {
+  x = intoPeriod(p, x);
+  const float at[3] = {x.x, x.y, x.z}, lo[3] = {p.lo.x, p.lo.y, p.lo.z};
+  const float hi[3] = {p.hi.x, p.hi.y, p.hi.z}, length[3] = {p.length.x, p.length.y, p.length.z};
+  float shifts[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  int count[3] = {1, 1, 1};
+  for (int a = 0; a < 3; ++a) {
+    if (!isPeriodic(p, a)) continue;
+    if (at[a] < lo[a] + reach)
+      shifts[a][count[a]++] = length[a];
+    else if (at[a] > hi[a] - reach)
+      shifts[a][count[a]++] = -length[a];
+  }
+  for (int i = 0; i < count[0]; ++i)
+    for (int j = 0; j < count[1]; ++j)
+      for (int k = 0; k < count[2]; ++k) add(x + Vec3{shifts[0][i], shifts[1][j], shifts[2][k]});
+}
+
+}  // namespace detail
+
+// Returns the largest speed of an object particle inside the domain (the box the fluid can
+// be in), m/s: a torn piece falling away below it limits nothing.
+// With boundary coupling (params.boundary) also the same particles as the fluid's boundary
+// particles (prepare_object_boundary.hpp); else `boundary` is left empty.
+//
+// Along a periodic axis each particle is moved into the domain, and one near a face is also
+// copied, as its image, beyond the opposite face, with the same handle: the fluid near that
+// face then finds it as a plain neighbour, both passes meet each pair once with the same
+// arguments, and the forces on a particle and its images add up in the exchange.
 template <class B>
 float prepareObjectParticles(ObjectParticles<B>& objects, fluid::BoundaryParticles<B>& boundary,
                              const ObjectSurface& surface, const InteractionParameters& params,
@@ -29,42 +77,46 @@ float prepareObjectParticles(ObjectParticles<B>& objects, fluid::BoundaryParticl
   for (std::size_t k = 0; k < surface.size(); ++k)
     reach = fmaxf(reach, contactReach(params, radiusOf(surface.position[k])));
   const float margin = params.boundary ? fmaxf(reach, fluidParams.h) : reach;
-  std::vector<std::uint32_t> kept;
-  for (std::size_t k = 0; k < surface.size(); ++k) {
-    const Vec3 p = xyz(surface.position[k]);
-    if (p.x >= domainMin.x - margin && p.y >= domainMin.y - margin && p.z >= domainMin.z - margin &&
-        p.x <= domainMax.x + margin && p.y <= domainMax.y + margin && p.z <= domainMax.z + margin)
-      kept.push_back(std::uint32_t(k));
-  }
-  const std::size_t n = kept.size();
+  std::vector<Vec3> at;             // where each kept particle or image lies
+  std::vector<std::uint32_t> from;  // its index in `surface`
+  for (std::size_t k = 0; k < surface.size(); ++k)
+    detail::forEachImageInReach(fluidParams.periodic, xyz(surface.position[k]), margin,
+                                [&](Vec3 p) {
+                                  if (p.x >= domainMin.x - margin && p.y >= domainMin.y - margin &&
+                                      p.z >= domainMin.z - margin && p.x <= domainMax.x + margin &&
+                                      p.y <= domainMax.y + margin && p.z <= domainMax.z + margin) {
+                                    at.push_back(p);
+                                    from.push_back(std::uint32_t(k));
+                                  }
+                                });
+  const std::size_t n = at.size();
   objects.count = n;
   boundary.count = 0;
   objects.force.resize(n);
   if (n == 0) return 0.0f;
-  Vec3 lo = xyz(surface.position[kept[0]]), hi = lo;
+  Vec3 lo = at[0], hi = lo;
   float maxSpeed2 = 0.0f;
-  for (std::uint32_t k : kept) {
-    const Vec3 p = xyz(surface.position[k]);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3 p = at[k];
     lo = Vec3{fminf(lo.x, p.x), fminf(lo.y, p.y), fminf(lo.z, p.z)};
     hi = Vec3{fmaxf(hi.x, p.x), fmaxf(hi.y, p.y), fmaxf(hi.z, p.z)};
     const bool inDomain = p.x >= domainMin.x && p.y >= domainMin.y && p.z >= domainMin.z &&
                           p.x <= domainMax.x && p.y <= domainMax.y && p.z <= domainMax.z;
-    if (inDomain) maxSpeed2 = fmaxf(maxSpeed2, lengthSquared(xyz(surface.velocity[k])));
+    if (inDomain) maxSpeed2 = fmaxf(maxSpeed2, lengthSquared(xyz(surface.velocity[from[k]])));
   }
   // Boundary particles are found through this grid from the fluid, out to h.
   objects.grid = makeGrid(lo, hi, margin);
   const GridSpec grid = objects.grid;
   std::vector<std::uint32_t> cell(n), order(n), cellStart(grid.cellCount + 1);
   for (std::size_t k = 0; k < n; ++k)
-    cell[k] =
-        cellIndex(grid, clampToGrid(grid, cellCoordinate(grid, xyz(surface.position[kept[k]]))));
+    cell[k] = cellIndex(grid, clampToGrid(grid, cellCoordinate(grid, at[k])));
   backend::countingSort(cell.data(), n, grid.cellCount, order.data(), cellStart.data());
 
   std::vector<Vec4> position(n), velocity(n), normal(n);
   std::vector<std::uint32_t> handle(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t s = kept[order[k]];
-    position[k] = packPosition(xyz(surface.position[s]), radiusOf(surface.position[s]));
+    const std::size_t s = from[order[k]];
+    position[k] = packPosition(at[order[k]], radiusOf(surface.position[s]));
     velocity[k] = packVelocity(xyz(surface.velocity[s]), surface.cut[s] != 0);
     normal[k] = packNormal(xyz(surface.normal[s]), surface.object[s]);
     handle[k] = surface.handle[s];
@@ -88,11 +140,11 @@ float prepareObjectParticles(ObjectParticles<B>& objects, fluid::BoundaryParticl
   for (std::size_t k = 0; k < n; ++k) {
     // Torn particles can hang loose, far from the vessel they came from: the box is the
     // intact wall's.
-    if (surface.cut[k]) continue;
-    const Vec3 p = xyz(surface.position[k]);
-    const float r = contactReach(params, radiusOf(surface.position[k]));
-    Vec4& lo = bounds[2 * std::size_t(surface.object[k])];
-    Vec4& hi = bounds[2 * std::size_t(surface.object[k]) + 1];
+    if (isCut(velocity[k])) continue;
+    const Vec3 p = xyz(position[k]);
+    const float r = contactReach(params, radiusOf(position[k]));
+    Vec4& lo = bounds[2 * std::size_t(objectOf(normal[k]))];
+    Vec4& hi = bounds[2 * std::size_t(objectOf(normal[k])) + 1];
     lo = Vec4{fminf(lo.x, p.x - r), fminf(lo.y, p.y - r), fminf(lo.z, p.z - r), 0};
     hi = Vec4{fmaxf(hi.x, p.x + r), fmaxf(hi.y, p.y + r), fmaxf(hi.z, p.z + r), 0};
   }

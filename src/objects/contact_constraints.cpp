@@ -12,8 +12,8 @@ struct Separation {
   double distance;
 };
 
-Separation separation(DVec3 a, DVec3 b) {
-  const DVec3 d = a - b;
+Separation separation(const PeriodicSpace& space, DVec3 a, DVec3 b) {
+  const DVec3 d = space.any() ? space.nearest(a - b) : a - b;
   const double l = norm(d);
   return {l > 0.0 ? d / l : DVec3{0, 0, 0}, l};
 }
@@ -33,23 +33,31 @@ void findContactCandidates(const ContactParticles& p, float maxRadius, double ma
   const double reachMax = 2.0 * double(maxRadius) + margin;
   ContactSearch& search = contacts.search;
   markNearOtherObjects(p, reachMax, search);
-  search.grid.build(p.position, reachMax, search.near);
-  for (std::size_t i = 0; i < p.position.size(); ++i) {
+  const std::vector<DVec3>& position = searchPositions(p, search);
+  search.grid.build(position, reachMax, search.near);
+  // Each pair once, through the one image of i that reaches the other particle: the distance
+  // is taken from that image, not to the nearest.
+  const auto distance = [](DVec3 a, DVec3 b) { return norm(a - b); };
+  for (std::size_t i = 0; i < position.size(); ++i) {
     if (p.role[i] != ContactRole::Projected) continue;
     const std::uint32_t a = std::uint32_t(i);
     if (search.near[i])
-      search.grid.forEachCandidate(p.position[i], reachMax, [&](std::uint32_t j) {
-        if (p.object[j] == p.object[i] || p.role[j] == ContactRole::Pushed) return;
-        if (p.role[j] == ContactRole::Projected && j <= i) return;
-        const double reach = double(p.radius[i]) + double(p.radius[j]) + margin;
-        if (separation(p.position[i], p.position[j]).distance < reach)
-          contacts.candidates.push_back({a, j, false});
+      p.space.forEachImage(position[i], reachMax, [&](DVec3 shift) {
+        const DVec3 xi = position[i] + shift;
+        search.grid.forEachCandidate(xi, reachMax, [&](std::uint32_t j) {
+          if (p.object[j] == p.object[i] || p.role[j] == ContactRole::Pushed) return;
+          if (p.role[j] == ContactRole::Projected && j <= i) return;
+          const double reach = double(p.radius[i]) + double(p.radius[j]) + margin;
+          if (distance(xi, position[j]) < reach) contacts.candidates.push_back({a, j, false});
+        });
       });
     if (statics.position.empty()) continue;
     const double reach = double(p.radius[i]) + double(statics.radius) + margin;
-    statics.grid.forEachCandidate(p.position[i], reach, [&](std::uint32_t j) {
-      if (separation(p.position[i], statics.position[j]).distance < reach)
-        contacts.candidates.push_back({a, j, true});
+    p.space.forEachImage(position[i], reach, [&](DVec3 shift) {
+      const DVec3 xi = position[i] + shift;
+      statics.grid.forEachCandidate(xi, reach, [&](std::uint32_t j) {
+        if (distance(xi, statics.position[j]) < reach) contacts.candidates.push_back({a, j, true});
+      });
     });
   }
 }
@@ -60,7 +68,7 @@ void selectTouching(const std::vector<DVec3>& position, const std::vector<float>
   for (const ConstraintContact& c : contacts.candidates) {
     const DVec3 xb = c.againstStatic ? statics.position[c.b] : position[c.b];
     const double rb = c.againstStatic ? double(statics.radius) : double(radius[c.b]);
-    if (separation(position[c.a], xb).distance < double(radius[c.a]) + rb)
+    if (separation(contacts.space, position[c.a], xb).distance < double(radius[c.a]) + rb)
       contacts.touching.push_back(c);
   }
 }
@@ -76,7 +84,7 @@ void projectContactConstraints(const ContactCoefficients& k, double h,
   for (const ConstraintContact& c : contacts.touching) {
     const DVec3 xb = c.againstStatic ? statics.position[c.b] : position[c.b];
     const double rb = c.againstStatic ? double(statics.radius) : double(radius[c.b]);
-    const Separation s = separation(position[c.a], xb);
+    const Separation s = separation(contacts.space, position[c.a], xb);
     const double overlap = double(radius[c.a]) + rb - s.distance;
     if (!(overlap > 0.0) || !(s.distance > 0.0)) continue;
     const double wa = inverseMass[c.a], wb = c.againstStatic ? 0.0 : inverseMass[c.b];
@@ -101,7 +109,7 @@ void dampContactConstraints(const ContactCoefficients& k, double h,
   const DVec3 still{0, 0, 0};
   for (const ConstraintContact& c : contacts.touching) {
     const DVec3 xb = c.againstStatic ? statics.position[c.b] : position[c.b];
-    const Separation s = separation(position[c.a], xb);
+    const Separation s = separation(contacts.space, position[c.a], xb);
     if (!(s.distance > 0.0)) continue;
     const double wa = inverseMass[c.a], wb = c.againstStatic ? 0.0 : inverseMass[c.b];
     const double w = wa + wb;

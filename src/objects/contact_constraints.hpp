@@ -27,6 +27,8 @@ struct ConstraintContact {
 
 struct ContactConstraints {
   ContactSearch search;
+  // The fluid's periodic axes: each pair is solved along its nearest image.
+  PeriodicSpace space;
   // The pairs within reach plus a margin at the engine step's start (findContactCandidates), and
   // of them those touching now (selectTouching), in a fixed order.
   std::vector<ConstraintContact> candidates, touching;

@@ -153,6 +153,7 @@ struct ObjectWorld::Impl {
   void integrateDeformable(const SpringNetwork& net, double h);
   void integrateRigid(const Object& object, RigidBody& body, double h);
   void publish();
+  void wrapAcrossPeriodicFaces();
   double stableSubstep() const;
   double fastestInRegion() const;
   void findContactCandidates(double dt);
@@ -372,7 +373,8 @@ ContactParticles ObjectWorld::Impl::contactParticles() const {
           published.object,
           role,
           toD(settings.regionMin),
-          toD(settings.regionMax)};
+          toD(settings.regionMax),
+          settings.periodic};
 }
 
 StaticParticles ObjectWorld::Impl::staticParticles() const {
@@ -482,6 +484,36 @@ void ObjectWorld::Impl::publish() {
   }
 }
 
+// Moves the whole object, so that no spring, bending triple or volume spans a face; the
+// contacts meet it across the face through its images. Kinematic objects follow their paths,
+// and a deformable held by pinned particles stays where they hold it.
+void ObjectWorld::Impl::wrapAcrossPeriodicFaces() {
+  if (!settings.periodic.any()) return;
+  for (const Object& object : objects) {
+    if (object.motion == ObjectMotion::Kinematic) continue;
+    const std::size_t end = object.first + object.count;
+    if (std::any_of(published.pinned.begin() + std::ptrdiff_t(object.first),
+                    published.pinned.begin() + std::ptrdiff_t(end),
+                    [](std::uint8_t pinned) { return pinned != 0; }))
+      continue;
+    DVec3 centre{0, 0, 0};
+    if (object.motion == ObjectMotion::Rigid) {
+      centre = rigid[object.body].centreOfMass();
+    } else {
+      for (std::size_t i = object.first; i < end; ++i) centre += position[i];
+      centre = centre / double(object.count);  // equal masses
+    }
+    const DVec3 shift = settings.periodic.shiftInto(centre);
+    if (shift.x == 0.0 && shift.y == 0.0 && shift.z == 0.0) continue;
+    for (std::size_t i = object.first; i < end; ++i) position[i] += shift;
+    if (object.motion == ObjectMotion::Rigid) {
+      RigidBody::Motion m = rigid[object.body].motion();
+      m.position += shift;
+      rigid[object.body].setMotion(m);
+    }
+  }
+}
+
 double ObjectWorld::Impl::stableSubstep() const {
   double h = std::numeric_limits<double>::infinity();
   if (shortestSpringStep < std::numeric_limits<double>::infinity()) {
@@ -542,6 +574,7 @@ ObjectWorld::ObjectWorld(const std::vector<ObjectDesc>& objects, const WorldSett
   const bool anyMovable = std::find(w.movable.begin(), w.movable.end(), 1) != w.movable.end();
   for (const Vec3& x : settings.staticParticles) w.statics.push_back(toD(x));
   if (!w.statics.empty()) w.staticGrid.build(w.statics, 2.0 * double(settings.staticRadius));
+  w.contactConstraints.space = settings.periodic;
   w.contactsPossible = (objects.size() >= 2 || !w.statics.empty()) && anyMovable &&
                        (k.spring > 0.0f || k.damping > 0.0f || k.shear > 0.0f);
   w.publish();
@@ -562,6 +595,10 @@ const ParticleState& ObjectWorld::particles() const {
 
 double ObjectWorld::time() const {
   return impl_->time;
+}
+
+const PeriodicSpace& ObjectWorld::periodicSpace() const {
+  return impl_->settings.periodic;
 }
 
 Vec3 ObjectWorld::contactForce(std::size_t object) const {
@@ -625,6 +662,7 @@ void ObjectWorld::step(double dt, const std::vector<Vec3>& externalForce) {
   for (std::size_t o = 0; o < w.objects.size(); ++o) w.contactForce[o] = w.contactImpulse[o] / dt;
   for (const Impl::Object& object : w.objects)
     if (object.motion == ObjectMotion::Kinematic) w.placeKinematic(object);
+  w.wrapAcrossPeriodicFaces();
   w.publish();
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "objects/periodic_space.hpp"
 #include "sph/core/contact.hpp"
 #include "sph/core/vec.hpp"
 #include "sph/scene.hpp"
@@ -30,6 +31,10 @@ struct WorldSettings {
   // piece torn off and falling away, bounds no substep with its speed.
   Vec3 regionMin{-3.0e38f, -3.0e38f, -3.0e38f};
   Vec3 regionMax{3.0e38f, 3.0e38f, 3.0e38f};
+  // The fluid's periodic axes (the region is unbounded along them): objects meet across a
+  // periodic face, and one whose centre leaves through a face comes back whole through the
+  // other.
+  PeriodicSpace periodic;
   // Objects filled with an incompressible liquid, by index: each one that is a closed XPBD
   // deformable keeps the volume it encloses until it tears (volume_constraint.hpp).
   std::vector<std::size_t> liquidFilled;
@@ -103,11 +108,14 @@ class ObjectWorld {
   // ObjectInfo::contactForce alone, without summing the object's particles.
   Vec3 contactForce(std::size_t object) const;
   double time() const;
+  const PeriodicSpace& periodicSpace() const;
 
   // Advances by dt. `externalForce` holds, per particle index, a force (N) acting throughout
   // the step (the fluid's contact forces); empty means none. Substeps internally as the
   // springs, masses and contacts require (`stableSubstep`), and no fewer times than any XPBD
   // deformable's `substeps`; kinematic objects follow their keyframes; pinned particles stay.
+  // Then a rigid body or a deformable without pinned particles whose centre of mass has left the
+  // domain along a periodic axis moves, whole, by a period (WorldSettings::periodic).
   void step(double dt, const std::vector<Vec3>& externalForce);
 
   // The largest internal step the explicit integration is stable with, for the stiffest

@@ -128,7 +128,8 @@ void checkDensityModel(const ReadContext& context, const Scene& scene) {
 
 // A periodic axis must hold the kernel's support three times (the grid's cells then see each
 // neighbour once, through one image) and a whole number of spacings (the lattice then meets
-// itself across the face). Objects are not carried across a periodic face.
+// itself across the face). The built-in engine carries objects across a periodic face;
+// Bullet's are not.
 void checkPeriodic(const ReadContext& context, const Scene& scene) {
   const DomainDesc& d = scene.domain;
   const double spacing = scene.fluid.spacing, support = scene.fluid.supportRatio * spacing;
@@ -151,13 +152,14 @@ void checkPeriodic(const ReadContext& context, const Scene& scene) {
                        " spacings",
                    {"domain.min", "domain.max", "fluid.spacing"});
   }
-  if ((d.periodic[0] || d.periodic[1] || d.periodic[2]) && !scene.objects.empty())
+  if ((d.periodic[0] || d.periodic[1] || d.periodic[2]) && !scene.objects.empty() &&
+      scene.objectEngine.type == ObjectEngineKind::Bullet)
     context.fail("domain.periodic",
-                 "expected no periodic axes in a scene with objects (objects are not carried "
-                 "across a periodic face), got \"" +
+                 "expected no periodic axes with object_engine.type \"bullet\" (Bullet's bodies "
+                 "are not carried across a periodic face; the built-in engine's are), got \"" +
                      std::string(d.periodic[0] ? "x" : "") + (d.periodic[1] ? "y" : "") +
                      (d.periodic[2] ? "z" : "") + "\"",
-                 {"objects"});
+                 {"object_engine.type"});
 }
 
 // Boundary coupling gives the objects the incompressible solver's pressure: there is none

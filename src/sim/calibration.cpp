@@ -158,6 +158,19 @@ objects::WorldSettings worldSettings(const Scene& scene, const Calibration& c) {
   const AxisBox& domain = scene.domain.box;
   w.regionMin = Vec3{float(domain.min[0]), float(domain.min[1]), float(domain.min[2])};
   w.regionMax = Vec3{float(domain.max[0]), float(domain.max[1]), float(domain.max[2])};
+  float* regionMin[3] = {&w.regionMin.x, &w.regionMin.y, &w.regionMin.z};
+  float* regionMax[3] = {&w.regionMax.x, &w.regionMax.y, &w.regionMax.z};
+  double* lo[3] = {&w.periodic.lo.x, &w.periodic.lo.y, &w.periodic.lo.z};
+  double* length[3] = {&w.periodic.length.x, &w.periodic.length.y, &w.periodic.length.z};
+  for (int a = 0; a < 3; ++a) {
+    if (!scene.domain.periodic[a]) continue;
+    w.periodic.periodic[a] = true;
+    *lo[a] = domain.min[a];
+    *length[a] = domain.max[a] - domain.min[a];
+    // An object is whole on one side or the other of a face: parts of it lie outside.
+    *regionMin[a] = -3.0e38f;
+    *regionMax[a] = 3.0e38f;
+  }
   // Under boundary coupling the fluid is incompressible and its solve holds the objects still:
   // a vessel it fills must keep its volume by itself (objects/volume_constraint.hpp). Under
   // contact coupling the weakly compressible fluid's pressure tells the vessel.

@@ -13,7 +13,8 @@ namespace sph::sim {
 
 // Removes from `points` every point within `reachOf(radius)` of an object particle of that
 // radius, and every point in the cavity of a closed object other than `container` (the object
-// a block is declared `inside`, or -1). Keeps the order of the points that remain.
+// a block is declared `inside`, or -1). Across a periodic face of the world's, an object blocks
+// through its images. Keeps the order of the points that remain.
 void removeObjectOverlap(std::vector<Vec3>& points, const objects::ObjectWorld& world,
                          const std::function<float(float)>& reachOf, int container);
 

@@ -120,11 +120,15 @@ struct Simulation::Impl {
     // Under Bullet the scene's objects are the attached engine's (sph/bullet_engine.hpp).
     if (!scene.objects.empty() && scene.objectEngine.type == ObjectEngineKind::Builtin) {
       objects::WorldSettings settings = sim::worldSettings(scene, calibration);
-      settings.staticParticles = setup.walls;  // objects rest on the walls that hold the fluid
+      // Objects rest on the walls that hold the fluid; they meet the walls across a periodic
+      // face through their own images, not the walls' (which follow the walls' particles).
+      settings.staticParticles.assign(
+          setup.walls.begin(), setup.walls.begin() + std::ptrdiff_t(walls.firstParticle().back()));
       settings.staticRadius = static_cast<float>(0.5 * scene.fluid.spacing);
       world.emplace(scene.objects, settings);
       interactionParams = sim::interactionParameters(scene, calibration);
       checkContactReach(*world);
+      checkPeriodicExtent(*world);
     }
 
     sampleFluid(setup, walls, world ? &*world : nullptr);
@@ -212,6 +216,34 @@ struct Simulation::Impl {
     if (fresh.position.empty()) return;
     engine->addParticles(fresh.position, fresh.velocity, nextId);
     nextId += std::uint32_t(fresh.position.size());
+  }
+
+  // Across a periodic face an object must never meet its own image: the fluid between them
+  // would find both.
+  void checkPeriodicExtent(const objects::ObjectWorld& world) const {
+    const objects::PeriodicSpace& space = world.periodicSpace();
+    const objects::ParticleState& particles = world.particles();
+    const double periods[3] = {space.length.x, space.length.y, space.length.z};
+    for (std::size_t o = 0; o < world.objectCount() && space.any(); ++o) {
+      const objects::ObjectInfo info = world.info(o);
+      for (int a = 0; a < 3; ++a) {
+        if (!space.periodic[a]) continue;
+        double lo = 1e300, hi = -1e300;
+        for (std::size_t i = info.firstParticle; i < info.firstParticle + info.particleCount; ++i) {
+          const Vec3 x = particles.position[i];
+          const double v = a == 0 ? x.x : a == 1 ? x.y : x.z;
+          lo = std::min(lo, v);
+          hi = std::max(hi, v);
+        }
+        const double most = periods[a] - 2.0 * scene.fluid.supportRatio * scene.fluid.spacing;
+        if (hi - lo > most)  // the extent of float positions, to the micrometre
+          throw InputError(scene.sourcePath + ": objects[" + std::to_string(o) +
+                           "]: expected the object to span at most the domain's period along " +
+                           "periodic axis " + "xyz"[a] + " less two support radii (" +
+                           formatNumber(most) + " m), got " +
+                           formatNumber(std::round((hi - lo) * 1e6) / 1e6) + " m");
+      }
+    }
   }
 
   // Contacts are found through the fluid's grid (cell edge h) from the object particles.
