@@ -5,13 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "backends.hpp"
 #include "sph/simulation.hpp"
+#include "test_data.hpp"
 
 namespace sph {
 namespace {
@@ -21,17 +20,7 @@ struct FrontPoint {
 };
 
 std::vector<FrontPoint> readMartinMoyce() {
-  std::ifstream in(std::string(SPH_SOURCE_DIR) + "/tests/data/martin_moyce_1952_square_front.csv");
-  std::vector<FrontPoint> points;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'T') continue;
-    std::istringstream fields(line);
-    FrontPoint p;
-    char comma;
-    if (fields >> p.T >> comma >> p.Z) points.push_back(p);
-  }
-  return points;
+  return testing::readTestData<FrontPoint>("martin_moyce_1952_square_front.csv");
 }
 
 // A column a = 0.1 m of 20 × 20 particles, 10 deep, in a tank 5.5 a long with 2 wall layers.
@@ -88,9 +77,10 @@ void expectFrontFollowsMartinAndMoyce(Backend backend, FluidSolver solver) {
     largestError = std::max(largestError, std::abs(error));
     ++compared;
   }
-  std::printf("  surge front against Martin & Moyce, %d points T <= 3: mean |error| %.1f %%, "
-              "largest %.1f %%\n",
-              compared, 100.0 * sumError / std::max(compared, 1), 100.0 * largestError);
+  std::printf(
+      "  surge front against Martin & Moyce, %d points T <= 3: mean |error| %.1f %%, "
+      "largest %.1f %%\n",
+      compared, 100.0 * sumError / std::max(compared, 1), 100.0 * largestError);
   EXPECT_GE(compared, 15);
   EXPECT_LT(sumError / compared, 0.05) << "mean relative error in Z";
   EXPECT_EQ(sim.fluidCount(), sim.calibration().fluidParticles) << "no particle may leave";

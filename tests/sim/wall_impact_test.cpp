@@ -8,13 +8,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "backends.hpp"
 #include "sph/simulation.hpp"
+#include "test_data.hpp"
 
 namespace sph {
 namespace {
@@ -33,17 +32,7 @@ struct Sample {
 };
 
 std::vector<Sample> readBuchnerP1() {
-  std::ifstream in(std::string(SPH_SOURCE_DIR) + "/tests/data/buchner_2002_wall_pressure_p1.csv");
-  std::vector<Sample> samples;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'T') continue;
-    std::istringstream fields(line);
-    Sample s;
-    char comma;
-    if (fields >> s.T >> comma >> s.P) samples.push_back(s);
-  }
-  return samples;
+  return testing::readTestData<Sample>("buchner_2002_wall_pressure_p1.csv");
 }
 
 WallDesc plane(const char* name, Vec3d corner, Vec3d edge1, Vec3d edge2) {
