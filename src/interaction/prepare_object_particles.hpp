@@ -15,10 +15,6 @@
 
 namespace sph::interaction {
 
-// Returns the largest speed of an object particle inside the domain (the box the fluid can
-// be in), m/s: a torn piece falling away below it limits nothing.
-// With boundary coupling (params.boundary) also the same particles as the fluid's boundary
-// particles (prepare_object_boundary.hpp); else `boundary` is left empty.
 namespace detail {
 
 // x moved by whole periods into the domain along each periodic axis: an object is kept whole
