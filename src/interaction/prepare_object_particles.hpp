@@ -17,38 +17,20 @@ namespace sph::interaction {
 
 namespace detail {
 
-// x moved by whole periods into the domain along each periodic axis: an object is kept whole
-// by its engine, so its particles may lie any distance past a face.
-inline Vec3 intoPeriod(const Periodicity& p, Vec3 x) {
-  const auto wrap = [](float v, float lo, float length) {
-    const float w = v - length * std::floor((v - lo) / length);
-    return w < lo + length ? w : lo;
-  };
-  if (isPeriodic(p, 0)) x.x = wrap(x.x, p.lo.x, p.length.x);
-  if (isPeriodic(p, 1)) x.y = wrap(x.y, p.lo.y, p.length.y);
-  if (isPeriodic(p, 2)) x.z = wrap(x.z, p.lo.z, p.length.z);
-  return x;
-}
-
-// Calls add(x) for x, moved into the domain, and for each of its images (shifted by a period
-// along one axis or several) that lies within `reach` of the domain beyond the opposite face.
+// Calls add(x) for x, moved by whole periods into the domain (an object is kept whole by its
+// engine, so its particles may lie any distance past a face), and for each of its images that
+// lies within `reach` of the domain beyond the opposite face.
 template <class Add>
 void forEachImageInReach(const Periodicity& p, Vec3 x, float reach, Add&& add) {
-  x = intoPeriod(p, x);
+  if (isPeriodic(p, 0)) x.x = intoPeriod(x.x, p.lo.x, p.length.x);
+  if (isPeriodic(p, 1)) x.y = intoPeriod(x.y, p.lo.y, p.length.y);
+  if (isPeriodic(p, 2)) x.z = intoPeriod(x.z, p.lo.z, p.length.z);
+  const bool periodic[3] = {isPeriodic(p, 0), isPeriodic(p, 1), isPeriodic(p, 2)};
   const float at[3] = {x.x, x.y, x.z}, lo[3] = {p.lo.x, p.lo.y, p.lo.z};
-  const float hi[3] = {p.hi.x, p.hi.y, p.hi.z}, length[3] = {p.length.x, p.length.y, p.length.z};
-  float shifts[3][2] = {{0, 0}, {0, 0}, {0, 0}};
-  int count[3] = {1, 1, 1};
-  for (int a = 0; a < 3; ++a) {
-    if (!isPeriodic(p, a)) continue;
-    if (at[a] < lo[a] + reach)
-      shifts[a][count[a]++] = length[a];
-    else if (at[a] > hi[a] - reach)
-      shifts[a][count[a]++] = -length[a];
-  }
-  for (int i = 0; i < count[0]; ++i)
-    for (int j = 0; j < count[1]; ++j)
-      for (int k = 0; k < count[2]; ++k) add(x + Vec3{shifts[0][i], shifts[1][j], shifts[2][k]});
+  const float hi[3] = {p.hi.x, p.hi.y, p.hi.z};
+  forEachPeriodicImage(periodic, at, lo, hi, reach, [&](const int s[3]) {
+    add(x + Vec3{float(s[0]) * p.length.x, float(s[1]) * p.length.y, float(s[2]) * p.length.z});
+  });
 }
 
 }  // namespace detail

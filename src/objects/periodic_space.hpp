@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "objects/math3d.hpp"
+#include "sph/core/periodic.hpp"
 
 namespace sph::objects {
 
@@ -29,13 +30,9 @@ struct PeriodicSpace {
 
   // x moved by whole periods into [lo, lo + L) along each periodic axis.
   DVec3 wrapped(DVec3 x) const {
-    const auto wrap = [](double v, double lo, double length) {
-      const double w = v - length * std::floor((v - lo) / length);
-      return w < lo + length ? w : lo;  // rounding can land a hair past the upper face
-    };
-    if (periodic[0]) x.x = wrap(x.x, lo.x, length.x);
-    if (periodic[1]) x.y = wrap(x.y, lo.y, length.y);
-    if (periodic[2]) x.z = wrap(x.z, lo.z, length.z);
+    if (periodic[0]) x.x = intoPeriod(x.x, lo.x, length.x);
+    if (periodic[1]) x.y = intoPeriod(x.y, lo.y, length.y);
+    if (periodic[2]) x.z = intoPeriod(x.z, lo.z, length.z);
     return x;
   }
 
@@ -43,26 +40,16 @@ struct PeriodicSpace {
   // object whose centre is c.
   DVec3 shiftInto(DVec3 c) const { return wrapped(c) - c; }
 
-  // Calls visit(shift) for the zero shift and for each shift by a period (along one axis or,
-  // near an edge or a corner, several) that brings a wrapped position x within `reach` of the
-  // domain from beyond the opposite face: the images to search from. The period must exceed
-  // twice the reach, so that each axis has at most one.
+  // Calls visit(shift) for the zero shift and for each shift by a period that brings a wrapped
+  // position x within `reach` of the domain from beyond the opposite face: the images to search
+  // from (forEachPeriodicImage).
   template <class Visit>
   void forEachImage(DVec3 x, double reach, Visit&& visit) const {
     const double at[3] = {x.x, x.y, x.z}, los[3] = {lo.x, lo.y, lo.z};
-    const double lengths[3] = {length.x, length.y, length.z};
-    double shifts[3][2] = {{0, 0}, {0, 0}, {0, 0}};
-    int count[3] = {1, 1, 1};
-    for (int a = 0; a < 3; ++a) {
-      if (!periodic[a]) continue;
-      if (at[a] < los[a] + reach)
-        shifts[a][count[a]++] = lengths[a];
-      else if (at[a] > los[a] + lengths[a] - reach)
-        shifts[a][count[a]++] = -lengths[a];
-    }
-    for (int i = 0; i < count[0]; ++i)
-      for (int j = 0; j < count[1]; ++j)
-        for (int k = 0; k < count[2]; ++k) visit(DVec3{shifts[0][i], shifts[1][j], shifts[2][k]});
+    const double his[3] = {lo.x + length.x, lo.y + length.y, lo.z + length.z};
+    forEachPeriodicImage(periodic, at, los, his, reach, [&](const int s[3]) {
+      visit(DVec3{s[0] * length.x, s[1] * length.y, s[2] * length.z});
+    });
   }
 };
 

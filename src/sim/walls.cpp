@@ -12,6 +12,7 @@
 #include "objects/point_grid.hpp"
 #include "objects/shape_sampling.hpp"
 #include "sim/sampling.hpp"
+#include "sph/core/periodic.hpp"
 #include "sph/error.hpp"
 
 namespace sph::sim {
@@ -221,28 +222,15 @@ std::vector<DVec3> periodicImages(const std::vector<DVec3>& particles, const Sce
   std::vector<DVec3> images;
   for (const DVec3& p : particles) {
     const double at[3] = {p.x, p.y, p.z};
-    // Per axis, the shifts that bring p within reach of the domain from the far side.
-    int shifts[3][2] = {{0, 0}, {0, 0}, {0, 0}};
-    int count[3] = {1, 1, 1};
-    for (int a = 0; a < 3; ++a) {
-      if (!d.periodic[a]) continue;
-      const double lo = d.box.min[a], hi = d.box.max[a];
-      if (at[a] < lo + reach)
-        shifts[a][count[a]++] = 1;
-      else if (at[a] > hi - reach)
-        shifts[a][count[a]++] = -1;
-    }
-    for (int i = 0; i < count[0]; ++i)
-      for (int j = 0; j < count[1]; ++j)
-        for (int k = 0; k < count[2]; ++k) {
-          const int s[3] = {shifts[0][i], shifts[1][j], shifts[2][k]};
-          if (s[0] == 0 && s[1] == 0 && s[2] == 0) continue;
-          DVec3 q = p;
-          q.x += s[0] * (d.box.max[0] - d.box.min[0]);
-          q.y += s[1] * (d.box.max[1] - d.box.min[1]);
-          q.z += s[2] * (d.box.max[2] - d.box.min[2]);
-          images.push_back(q);
-        }
+    forEachPeriodicImage(d.periodic.data(), at, d.box.min.data(), d.box.max.data(), reach,
+                         [&](const int s[3]) {
+                           if (s[0] == 0 && s[1] == 0 && s[2] == 0) return;
+                           DVec3 q = p;
+                           q.x += s[0] * (d.box.max[0] - d.box.min[0]);
+                           q.y += s[1] * (d.box.max[1] - d.box.min[1]);
+                           q.z += s[2] * (d.box.max[2] - d.box.min[2]);
+                           images.push_back(q);
+                         });
   }
   return images;
 }

@@ -5,6 +5,7 @@
 // the kernel's support.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "sph/core/select.hpp"
@@ -95,6 +96,38 @@ SPH_HD Vec3 wrapIntoDomain(const Periodicity& p, Vec3 x) {
   if (isPeriodic(p, 1)) x.y = wrap(x.y, p.lo.y, p.hi.y, p.length.y);
   if (isPeriodic(p, 2)) x.z = wrap(x.z, p.lo.z, p.hi.z, p.length.z);
   return x;
+}
+
+// v moved by whole periods into [lo, lo + length), however many periods away it lies (an
+// object kept whole may reach far past a face). T is float or double; on the host.
+template <class T>
+T intoPeriod(T v, T lo, T length) {
+  const T w = v - length * std::floor((v - lo) / length);
+  return w < lo + length ? w : lo;  // rounding can land a hair past the upper face
+}
+
+// Calls visit(shift) with shift[a] in {-1, 0, 1} periods along axis a: first no shift, then each
+// shift along a periodic axis (or, near an edge or a corner, several) that brings the point
+// `at` within `reach` of the domain [lo, hi) from beyond the opposite face. The period must
+// exceed twice the reach, so that each axis has at most one. On the host.
+template <class T, class Visit>
+void forEachPeriodicImage(const bool periodic[3], const T at[3], const T lo[3], const T hi[3],
+                          T reach, Visit&& visit) {
+  int shifts[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  int count[3] = {1, 1, 1};
+  for (int a = 0; a < 3; ++a) {
+    if (!periodic[a]) continue;
+    if (at[a] < lo[a] + reach)
+      shifts[a][count[a]++] = 1;
+    else if (at[a] > hi[a] - reach)
+      shifts[a][count[a]++] = -1;
+  }
+  for (int i = 0; i < count[0]; ++i)
+    for (int j = 0; j < count[1]; ++j)
+      for (int k = 0; k < count[2]; ++k) {
+        const int shift[3] = {shifts[0][i], shifts[1][j], shifts[2][k]};
+        visit(shift);
+      }
 }
 
 }  // namespace sph
