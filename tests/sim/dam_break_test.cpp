@@ -69,6 +69,8 @@ void expectFrontFollowsMartinAndMoyce(Backend backend, FluidSolver solver) {
     const double error = (Z - p.Z) / p.Z;
     // Stated tolerance: 10 % in Z for 0.8 ≤ T ≤ 3 (the far wall is at Z = 5.5); 12 % for the two
     // points before, while the experiment's gate was still opening (measured: +6 % and +10.5 %).
+    // It holds at this resolution only: refined, every model's front leads the experiment's by
+    // 8-10 % (docs/validation.md, "The surge front at finer resolution").
     const double tolerance = p.T < 0.8 ? 0.12 : 0.10;
     EXPECT_LT(std::abs(error), tolerance)
         << "T = " << p.T << ": Z = " << Z << ", experiment " << p.Z;
