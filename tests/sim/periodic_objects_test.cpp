@@ -12,6 +12,7 @@
 #include <string>
 
 #include "backends.hpp"
+#include "fluid_momentum.hpp"
 #include "sph/error.hpp"
 #include "sph/simulation.hpp"
 
@@ -51,20 +52,11 @@ struct Momentum {
   double scale = 0.0;  // Σ m|v|, what rounding is measured against
 };
 
-Momentum momentumAlongX(const Simulation& sim, const ParticleFrame& f) {
-  Momentum out;
-  const double m = sim.calibration().mass;
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    if (f.kind[i] != static_cast<std::uint8_t>(ParticleKind::Fluid)) continue;
-    out.x += m * f.velocity[3 * i];
-    out.scale += m * std::sqrt(double(f.velocity[3 * i]) * f.velocity[3 * i] +
-                               double(f.velocity[3 * i + 1]) * f.velocity[3 * i + 1] +
-                               double(f.velocity[3 * i + 2]) * f.velocity[3 * i + 2]);
-  }
+// Along the stream, fluid and sphere together.
+Momentum momentumAlongX(const Simulation& sim) {
+  const std::array<double, 4> fluid = testing::fluidMomentum(sim);
   const ObjectStats o = sim.objectStats().at(0);
-  out.x += o.mass * o.velocity[0];
-  out.scale += o.mass * std::abs(o.velocity[0]);
-  return out;
+  return {fluid[0] + o.mass * o.velocity[0], fluid[3] + o.mass * std::abs(o.velocity[0])};
 }
 
 // The nearest a fluid particle comes to the sphere's centre, through the nearest image.
@@ -92,9 +84,8 @@ struct Run {
 Run dragSphere(Scene scene, double centreX, Backend backend, bool straddles) {
   scene.objects[0].shape.center[0] = centreX;
   Simulation sim(scene, testing::on(backend));
-  ParticleFrame f = sim.frame(false);
-  const Momentum before = momentumAlongX(sim, f);
-  double closest = closestFluid(f, sim.objectStats().at(0));
+  const Momentum before = momentumAlongX(sim);
+  double closest = closestFluid(sim.frame(false), sim.objectStats().at(0));
   double previousX = sim.objectStats().at(0).centreOfMass[0];
   bool crossed = false;
   for (int step = 0; sim.time() < 0.15; ++step) {
@@ -107,8 +98,7 @@ Run dragSphere(Scene scene, double centreX, Backend backend, bool straddles) {
     previousX = x;
     if (step % 5 == 0) closest = std::min(closest, closestFluid(sim.frame(false), sphere));
   }
-  f = sim.frame(false);
-  const Momentum after = momentumAlongX(sim, f);
+  const Momentum after = momentumAlongX(sim);
   const ObjectStats sphere = sim.objectStats().at(0);
   std::printf(
       "sphere from x = %.3f m: at %.7f m/s, x = %.6f m; fluid %.4f m from its centre at "
