@@ -52,10 +52,7 @@ void printCalibration(std::FILE* out, const Simulation& sim) {
                  "divergence %.3g %%, %d-%d iterations, warm start %s\n",
                  100.0 * d.densityTolerance, 100.0 * d.divergenceTolerance, d.minIterations,
                  d.maxIterations, d.warmStart ? "on" : "off");
-    const std::string chebyshev =
-        d.chebyshev > 0.0 ? "rho " + sph::formatNumber(d.chebyshev) : "off";
-    std::fprintf(out, "  density solve        coarse level %.3g of its K, Chebyshev %s\n",
-                 d.coarseCorrection, chebyshev.c_str());
+    std::fprintf(out, "  density solve        coarse level %.3g of its K\n", d.coarseCorrection);
     std::fprintf(out,
                  "  first time step      %.6g s (adaptive unless time.fixed_dt: CFL %.3g h/v_max, "
                  "force factor %.3g; c0 sets the artificial viscosity only)\n",

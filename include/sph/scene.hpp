@@ -109,10 +109,6 @@ struct DfsphDesc {
   // (docs/solvers.md): the smooth part of the error at once, where Jacobi takes a pass a
   // neighbourhood. 0 leaves it out.
   double coarseCorrection = 0.7;
-  // Chebyshev's acceleration of the density solve's Jacobi iterations (docs/solvers.md): the
-  // estimate of their spectral radius, in [0, 1); 0 leaves it out. 0.7-0.8 take a third to a
-  // half fewer iterations, and leave more noise at rest.
-  double chebyshev = 0.0;
 };
 
 struct FluidDesc {

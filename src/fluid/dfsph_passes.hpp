@@ -102,9 +102,6 @@ struct RatePass {
   float* stiffnessRecords;
   std::uint64_t* error;
   float* signedError;  // e_i before it is counted: what the coarse level averages
-  float omega;         // Chebyshev's weight this iteration (1: plain Jacobi; dfsph_solve.hpp)
-  float* lastK;        // with Chebyshev: the K the last iteration applied, this one's written;
-                       // null without it
 
   // A particle the divergence solve corrects: one with a full neighbourhood, of fluid or of
   // fluid and walls (a particle against a wall has half the fluid neighbours, and its density).
@@ -134,13 +131,8 @@ struct RatePass {
                         : (inBulk(i) ? dt * rate / restDensity : 0.0f);
     const float counted = e > 0.0f ? e : 0.0f;
     signedError[i] = e;
-    const float k = dfsphStiffness(counted, factor[i], restDensity, dt);
-    float applied = k;
-    if (lastK != nullptr) {
-      if (omega != 1.0f) applied = omega * k + (omega - 1.0f) * lastK[i];
-      lastK[i] = applied;
-    }
-    stiffnessRecords[kRecordFields * i + SolverRecord::kK] = applied;
+    stiffnessRecords[kRecordFields * i + SolverRecord::kK] =
+        dfsphStiffness(counted, factor[i], restDensity, dt);
     // The fixed point's range: 16 × 2³² a particle leaves room in 64 bits for 2³⁸ particles.
     const float clamped = counted < 16.0f ? counted : 16.0f;
     error[i] = static_cast<std::uint64_t>(double(clamped) * kErrorScale);

@@ -22,9 +22,6 @@ struct SolverSettings {
   // The share of the coarse level's K (coarse_pressure.hpp) the density solve adds to its first
   // iteration; 0: none.
   float coarseShare = 0.0f;
-  // Chebyshev's estimate of the Jacobi iterations' spectral radius ρ (dfsph_solve.hpp); 0: plain
-  // Jacobi.
-  float chebyshev = 0.0f;
 };
 
 struct SolverReport {

@@ -146,59 +146,25 @@ float largestError(const FluidParticles<B>& fluid) {
   return float(double(largest) / kErrorScale);
 }
 
-// Chebyshev's semi-iterative acceleration of Jacobi (Golub & Varga 1961; as Wang, "A
-// Chebyshev Semi-Iterative Approach for Accelerating Projective and Position-based Dynamics",
-// 2015, applies it to a projected, nonlinear solve): each iteration applies
-// K̃ = ω K + (ω - 1) K̃_last, its weights from the estimate ρ of the spectral radius,
-//   ω_1 = 1, ω_2 = 2 / (2 - ρ²), ω_k+1 = 4 / (4 - ρ² ω_k).
-// K stays non-negative (ω ≥ 1). Where the error grows from one iteration to the next the weights
-// start again from ω = 1: the solve is projected (K ≥ 0), not the linear system the weights
-// are made for. Only the density solve takes it (SolverSettings): with the divergence solve's
-// iterations weighted too, ρ = 0.9 blew the 67,626-particle dam break up within 7 steps.
-class ChebyshevWeights {
- public:
-  explicit ChebyshevWeights(float rho) : rho2_(rho * rho) {}
-  float next() {
-    if (rho2_ == 0.0f) return 1.0f;
-    omega_ = step_ == 0   ? 1.0f
-             : step_ == 1 ? 2.0f / (2.0f - rho2_)
-                          : 4.0f / (4.0f - rho2_ * omega_);
-    ++step_;
-    return omega_;
-  }
-  void restart() { step_ = 0; }
-
- private:
-  float rho2_;
-  float omega_ = 1.0f;
-  int step_ = 0;
-};
-
 template <class B, class Kernels>
 SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
                      const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
                      const FluidParameters& params, const SolverSettings& settings,
                      SolverTarget target, float dt, NeighborWalk walk, CoarsePressure& coarse,
                      Kernels kernels) {
-  RatePass rate{target,
-                params.mass,
-                params.restDensity,
-                dt,
-                settings.minNeighbours,
-                fluid.velocityRecords.data(),
-                fluid.density.data(),
-                fluid.solverFactor.data(),
-                fluid.neighborCount.data(),
-                fluid.solverWallGradient.data(),
-                fluid.stiffnessRecords.data(),
-                fluid.solverError.data(),
-                fluid.solverSignedError.data(),
-                1.0f,
-                nullptr};
-  if (settings.chebyshev > 0.0f) {
-    fluid.solverLastK.resize(fluid.count);
-    rate.lastK = fluid.solverLastK.data();
-  }
+  const RatePass rate{target,
+                      params.mass,
+                      params.restDensity,
+                      dt,
+                      settings.minNeighbours,
+                      fluid.velocityRecords.data(),
+                      fluid.density.data(),
+                      fluid.solverFactor.data(),
+                      fluid.neighborCount.data(),
+                      fluid.solverWallGradient.data(),
+                      fluid.stiffnessRecords.data(),
+                      fluid.solverError.data(),
+                      fluid.solverSignedError.data()};
   const VelocityPass correct{params.mass,
                              params.restDensity,
                              dt,
@@ -215,10 +181,7 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
     runSolverPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, params.periodic, walk,
                   correct, gradients);
   SolverReport report;
-  ChebyshevWeights chebyshev(settings.chebyshev);
-  float lastError = HUGE_VALF;
   for (;;) {
-    rate.omega = chebyshev.next();
     if (report.iterations == 0 && target == SolverTarget::NoDivergence) {
       const FactorAndRatePass first{
           {params.mass / params.restDensity, dfsphSmallestFactorSum(params.h),
@@ -231,8 +194,6 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
                     rate, gradients);
     }
     report.averageError = averageError(fluid);
-    if (report.averageError > lastError) chebyshev.restart();
-    lastError = report.averageError;
     const bool done =
         report.iterations >= settings.minIterations && report.averageError <= settings.tolerance;
     if (done || report.iterations >= settings.maxIterations) {

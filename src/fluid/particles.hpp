@@ -69,7 +69,6 @@ struct FluidParticles {
   Buffer<std::uint64_t> solverError;  // the last iteration's e_i, fixed point (kErrorScale)
   Buffer<float> solverSignedError;    // the same, signed: < 0 where the fluid would expand
   Buffer<float> coarseStiffness;      // the coarse level's K (coarse_correction.hpp)
-  Buffer<float> solverLastK;          // the K the last iteration applied (Chebyshev's step)
   // ∇W_ij = g_ij (x_i - x_j) of each listed neighbour (n × neighborStride, beside neighbors),
   // kept by the step's first solver pass for the others (solver_walk.hpp)
   Buffer<float> pairGradient;

@@ -85,7 +85,6 @@ const SceneKeys<DfsphDesc>& dfsphKeys() {
       boolean("density_solve", at(&DfsphDesc::densitySolve)),
       number("force_factor", at(&DfsphDesc::forceFactor), kUnitStep),
       number("coarse_correction", at(&DfsphDesc::coarseCorrection), kClosedUnit),
-      number("chebyshev", at(&DfsphDesc::chebyshev), kUnitBelowOne),
   }};
   return keys;
 }

@@ -57,7 +57,6 @@ inline constexpr NumberRule kNonNegative{0, kInfinity, false, true};
 inline constexpr NumberRule kClosedUnit{0, 1, false, false};   // [0, 1]
 inline constexpr NumberRule kUnitStep{0, 1, true, false};      // (0, 1]
 inline constexpr NumberRule kOpenUnit{0, 1, true, true};       // (0, 1)
-inline constexpr NumberRule kUnitBelowOne{0, 1, false, true};  // [0, 1)
 // Physical ranges, so that what validate accepts, run runs: a particle spacing from a micron to
 // 100 m (below, a lattice index overflows and nothing is sampled), a time step from a
 // nanosecond to 10 s (below, time stops advancing in double precision within a run), frames

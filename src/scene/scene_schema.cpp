@@ -80,9 +80,28 @@ std::optional<std::string> nearestKey(const std::string& key, const KeySchema& l
   return best;
 }
 
+namespace {
+
+// Keys that older versions read, and why they are gone: a scene that still names one is told
+// so, not offered the nearest key.
+struct RemovedKey {
+  const char* path;
+  const char* why;
+};
+constexpr RemovedKey kRemovedKeys[] = {
+    {"fluid.dfsph.chebyshev",
+     "Chebyshev's weights on the density solve were measured and not kept (docs/experiments.md); "
+     "delete the key"},
+};
+
+}  // namespace
+
 std::string unknownKeyText(const std::string& parentPath, const std::string& key,
                            const KeySchema& level) {
-  std::string text = "unknown key " + joinKey(parentPath, key);
+  const std::string path = joinKey(parentPath, key);
+  for (const RemovedKey& removed : kRemovedKeys)
+    if (path == removed.path) return path + ": removed from sph: " + removed.why;
+  std::string text = "unknown key " + path;
   if (const auto suggestion = nearestKey(key, level)) {
     return text + " (did you mean " + joinKey(parentPath, *suggestion) + "?)";
   }

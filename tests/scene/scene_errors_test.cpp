@@ -110,7 +110,7 @@ TEST(SceneErrors, ValuesOutOfRange) {
       {"/fluid/dfsph/max_iterations", 1,
        "fluid.dfsph.max_iterations: expected an integer in [2, 10000]"},
       {"/fluid/dfsph/force_factor", 2, "fluid.dfsph.force_factor: expected a number in (0, 1]"},
-      {"/fluid/dfsph/chebyshev", 1, "fluid.dfsph.chebyshev: expected a number in [0, 1), got 1"},
+      {"/fluid/dfsph/chebyshev", 0.8, "fluid.dfsph.chebyshev: removed from sph: Chebyshev's"},
       {"/fluid/viscosity/model", "xsph", "fluid.viscosity.model: expected one of \"muller\""},
       {"/fluid/viscosity/value", -1, "fluid.viscosity.value: expected a non-negative number"},
       {"/fluid/viscosity/wall_friction", "a lot", "fluid.viscosity.wall_friction: expected a"},

@@ -97,6 +97,14 @@ TEST(SceneOverrides, UnknownKeySuggestsTheNearestKey) {
                  {"scenes/x.json: --set solver=pcisph: unknown key solver (top-level keys are:"});
 }
 
+// A key an older version read says it was removed, rather than suggest another.
+TEST(SceneOverrides, ARemovedKeySaysItWasRemoved) {
+  EXPECT_EQ(parseError(completeSceneJson(), {"fluid.dfsph.chebyshev=0.8"}),
+            "scenes/x.json: --set fluid.dfsph.chebyshev=0.8: fluid.dfsph.chebyshev: removed from "
+            "sph: Chebyshev's weights on the density solve were measured and not kept "
+            "(docs/experiments.md); delete the key");
+}
+
 TEST(SceneOverrides, KeysThatDoNotFitTheSchemaShape) {
   expectContains(parseError(completeSceneJson(), {"fluid.spacing.0=1"}),
                  {"scenes/x.json: --set fluid.spacing.0=1: fluid.spacing holds a single value"});
