@@ -10,10 +10,10 @@
 #include "backend/cpu_parallel.hpp"
 #include "commands.hpp"
 #include "report.hpp"
-#include "scene/scene_loader.hpp"
 #include "sph/box_drop_scene.hpp"
 #include "sph/devices.hpp"
 #include "sph/error.hpp"
+#include "sph/scene_file.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::cli {
@@ -134,7 +134,7 @@ int benchCommand(const BenchOptions& options) {
   };
   for (int size : options.sizes) timeWithSolvers("box_drop", boxDropScene(size));
   for (const std::string& path : options.scenes) {
-    Scene scene = scene::loadScene(path, options.overrides);
+    Scene scene = loadScene(path, options.overrides);
     if (scene.objects.empty() || options.influenceRatios.empty()) {
       timeWithSolvers(scene.name, scene);
       continue;

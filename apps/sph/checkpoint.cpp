@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "io/frame_writer.hpp"
-#include "scene/scene_loader.hpp"
 #include "sph/error.hpp"
+#include "sph/scene_file.hpp"
 
 #ifndef SPH_VERSION
 #define SPH_VERSION "unknown"
@@ -60,8 +60,8 @@ fs::path checkpointDir(const fs::path& runDir) {
   return runDir / "checkpoints";
 }
 
-void writeCheckpoint(const fs::path& runDir, const Simulation& sim, const RunPosition& position,
-                     double checkpointEvery) {
+PendingCheckpoint makeCheckpoint(const Simulation& sim, const RunPosition& position,
+                                 double checkpointEvery, double reached) {
   nlohmann::json series = nlohmann::json::array();
   for (const auto& [time, file] : position.series) series.push_back({time, file});
   // Where the scene was read from, whole, so that a resume from another folder finds its meshes.
@@ -71,9 +71,10 @@ void writeCheckpoint(const fs::path& runDir, const Simulation& sim, const RunPos
       fs::exists(source, sourceError) ? fs::absolute(source, sourceError) : source;
   const nlohmann::json header = {{"sph_version", SPH_VERSION},
                                  {"scene_file", sceneFile.string()},
-                                 {"scene", scene::sceneToJson(sim.scene())},
+                                 {"scene", nlohmann::json::parse(sceneToJsonText(sim.scene()))},
                                  {"checkpoint_every", checkpointEvery},
                                  {"time", sim.time()},
+                                 {"reached", reached},
                                  {"steps", sim.stepCount()},
                                  {"frame", position.frame},
                                  {"stats_bytes", position.statsBytes},
@@ -81,16 +82,23 @@ void writeCheckpoint(const fs::path& runDir, const Simulation& sim, const RunPos
                                  {"series", series}};
   std::ostringstream state;
   sim.saveState(state);
-  const std::string bytes = checkpointBytes(header, state.str());
+  return {position.frame, checkpointBytes(header, state.str())};
+}
 
+void writeCheckpoint(const fs::path& runDir, const Simulation& sim, const RunPosition& position,
+                     double checkpointEvery) {
+  storeCheckpoint(runDir, makeCheckpoint(sim, position, checkpointEvery, sim.time()));
+}
+
+void storeCheckpoint(const fs::path& runDir, const PendingCheckpoint& checkpoint) {
   std::error_code error;
   fs::create_directories(checkpointDir(runDir), error);
   if (error)
     throw OutputError("cannot create '" + checkpointDir(runDir).string() + "': " + error.message());
   char name[64];
-  std::snprintf(name, sizeof name, "checkpoint_%05d%s", position.frame, kExtension);
+  std::snprintf(name, sizeof name, "checkpoint_%05d%s", checkpoint.frame, kExtension);
   io::writeFileAtomically(checkpointDir(runDir) / name, [&](std::ostream& out) {
-    out.write(bytes.data(), std::streamsize(bytes.size()));
+    out.write(checkpoint.bytes.data(), std::streamsize(checkpoint.bytes.size()));
   });
 
   std::vector<fs::path> all = checkpointsIn(runDir);

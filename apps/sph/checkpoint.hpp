@@ -19,8 +19,18 @@ namespace sph::cli {
 
 std::filesystem::path checkpointDir(const std::filesystem::path& runDir);
 
-// Writes the checkpoint of `sim` at `position` and removes all but the newest two. Throws
-// OutputError naming the file.
+// A checkpoint of `sim` at `position`, made now and written by storeCheckpoint; `reached`: how
+// far the run will have gone when it is written (the time of `sim`, or later).
+struct PendingCheckpoint {
+  int frame = 0;
+  std::string bytes;
+};
+PendingCheckpoint makeCheckpoint(const Simulation& sim, const RunPosition& position,
+                                 double checkpointEvery, double reached);
+// Writes it and removes all but the newest two. Throws OutputError naming the file.
+void storeCheckpoint(const std::filesystem::path& runDir, const PendingCheckpoint& checkpoint);
+
+// Both at once: the checkpoint of `sim` as it is now.
 void writeCheckpoint(const std::filesystem::path& runDir, const Simulation& sim,
                      const RunPosition& position, double checkpointEvery);
 

@@ -86,6 +86,8 @@ Checkpoint parseCheckpoint(const std::string& bytes, const std::filesystem::path
     if (!c.scene.is_object()) throw std::invalid_argument("scene is not an object");
     c.checkpointEvery = finiteAtLeastZero(h, "checkpoint_every");
     c.time = finiteAtLeastZero(h, "time");
+    c.reached = h.contains("reached") ? finiteAtLeastZero(h, "reached") : c.time;
+    if (c.reached < c.time) throw std::invalid_argument("reached is before time");
     c.position.frame = int(count(h, "frame", 99999));
     c.position.statsBytes = count(h, "stats_bytes", std::uint64_t(1) << 50);
     c.position.probesBytes = count(h, "probes_bytes", std::uint64_t(1) << 50);

@@ -27,6 +27,9 @@ struct Checkpoint {
   nlohmann::json scene;   // resolved (scene::sceneToJson)
   double checkpointEvery = 0.0;
   double time = 0.0;  // simulated, s
+  // How far the run went past it: a run that ends between two frames of its frame rate keeps
+  // the checkpoint of its last whole frame (run_command.cpp); time otherwise.
+  double reached = 0.0;
   RunPosition position;
   std::string state;  // Simulation::saveState's bytes
 };

@@ -15,9 +15,9 @@
 #include "progress.hpp"
 #include "report.hpp"
 #include "run_output.hpp"
-#include "scene/scene_loader.hpp"
 #include "scene_engine.hpp"
 #include "sph/error.hpp"
+#include "sph/scene_file.hpp"
 #include "sph/simulation.hpp"
 
 namespace sph::cli {
@@ -66,16 +66,16 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
       {"outlets", flowJson(sim.outletStats())},
       {"objects", objectsJson(sim.objectStats())},
       {"final", statsJson(sim.stats())},
-      {"scene", scene::sceneToJson(sim.scene())}};
+      {"scene", nlohmann::json::parse(sceneToJsonText(sim.scene()))}};
   io::writeFileAtomically(output.dir() / "summary.json",
                           [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
 }
 
 // A resumed run's scene is the one its checkpoint holds, its end time moved by --duration.
 Scene sceneOf(const RunOptions& options, const std::optional<Checkpoint>& resumed) {
-  if (!resumed) return scene::loadScene(options.scene, options.overrides);
-  Scene scene = scene::parseScene(resumed->scene, resumed->sceneFile, options.overrides);
-  const double at = resumed->time;
+  if (!resumed) return loadScene(options.scene, options.overrides);
+  Scene scene = parseScene(resumed->scene.dump(), resumed->sceneFile, options.overrides);
+  const double at = resumed->reached;
   if (scene.time.duration <= at)
     throw InputError(resumed->file.string() + ": time.duration: the run already reached t = " +
                      formatNumber(at) + " s; expected a longer --duration to extend it");
@@ -172,6 +172,11 @@ int runCommand(const RunOptions& options) {
     lastCheckpoint = sim.time();
   };
 
+  // A run that ends between two frames keeps the checkpoint of its last frame at a whole frame
+  // period, not of its end: a step lands on each frame's time, so a run stopped there and
+  // extended with --resume --duration takes the steps of one never stopped.
+  std::optional<PendingCheckpoint> lastWholeFrame;
+
   const int firstFrame = resumed ? resumed->position.frame + 1 : 1;
   try {
     if (!resumed) {
@@ -180,13 +185,19 @@ int runCommand(const RunOptions& options) {
     }
     for (int frame = firstFrame; sim.time() < endTime; ++frame) {
       const double frameTime = std::min(frame * framePeriod, endTime);
+      const bool cutShort = frameTime != frame * framePeriod;  // the last, between two frames
+      if (cutShort && checkpointEvery > 0.0)
+        lastWholeFrame = makeCheckpoint(sim, output.position(), checkpointEvery, endTime);
       while (sim.time() < frameTime) {
         sim.step(frameTime);
         if (sceneEngine) sceneEngine->step();
         progress.update(sim.time(), sim.stepCount());
       }
       writeFrame();
-      checkpointIfDue();
+      if (lastWholeFrame)
+        storeCheckpoint(output.dir(), *lastWholeFrame);
+      else
+        checkpointIfDue();
     }
   } catch (const SimulationFailure& failure) {
     output.finish();  // the frames before the failure are kept

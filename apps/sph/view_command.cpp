@@ -3,7 +3,7 @@
 
 #include "backend/cpu_parallel.hpp"
 #include "commands.hpp"
-#include "scene/scene_loader.hpp"
+#include "sph/scene_file.hpp"
 #include "viewer.hpp"
 
 namespace sph::cli {
@@ -14,7 +14,7 @@ bool viewerBuilt() {
 
 int viewCommand(const ViewCommandOptions& options) {
   backend::setThreadCount(options.threads);
-  const Scene scene = scene::loadScene(options.scene, options.overrides);
+  const Scene scene = loadScene(options.scene, options.overrides);
   view::ViewOptions view;
   view.simulation = simulationOptions(options.backend, options.device);
   view.width = options.width;

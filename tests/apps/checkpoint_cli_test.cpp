@@ -183,6 +183,26 @@ TEST_F(Checkpoints, AFinishedRunExtendsWithALongerDuration) {
   expectSameRun(whole, extended);
 }
 
+// The dam break at 30 frames a second stopped at 0.05 s, between two frames, then extended to
+// 0.1 s: the frames after the stop are those of a run never stopped. The stopped run's last
+// step lands on 0.05 s, which the whole run steps past; its newest checkpoint is therefore of
+// its last whole frame, from which the extension steps as the whole run did.
+TEST_F(Checkpoints, ARunStoppedBetweenFramesExtendsToTheSameBytes) {
+  const std::string damBreak = std::string(SPH_SOURCE_DIR) +
+                               "/scenes/dam_break.json --set fluid.spacing=0.01 --fps 30 "
+                               "--checkpoint-every 0.05 --threads 2 --quiet";
+  const fs::path whole = dir_ / "whole", extended = dir_ / "extended";
+  ASSERT_EQ(runSph("run " + damBreak + " --duration 0.1 --out " + whole.string()).code, 0);
+  ASSERT_EQ(runSph("run " + damBreak + " --duration 0.05 --out " + extended.string()).code, 0);
+  const Result same = runSph("run --resume " + extended.string() + " --quiet");
+  EXPECT_EQ(same.code, 2) << same.output;
+  EXPECT_NE(same.output.find("already reached t = 0.05 s"), std::string::npos) << same.output;
+  const Result longer =
+      runSph("run --resume " + extended.string() + " --duration 0.1 --threads 2 --quiet");
+  ASSERT_EQ(longer.code, 0) << longer.output;
+  expectSameRun(whole, extended);
+}
+
 TEST_F(Checkpoints, ADamagedCheckpointOrAMisusedResumeExitsTwoSayingWhy) {
   const fs::path run = dir_ / "run";
   ASSERT_EQ(runSph("run " + pipe() + " --duration 0.1 --checkpoint-every 0.05 --quiet --out " +
