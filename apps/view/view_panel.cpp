@@ -167,11 +167,16 @@ void smooth(StepProfile& into, const StepProfile& latest, double w) {
   const auto mix = [w](double& a, double b) { a += w * (b - a); };
   mix(into.buildGrid, latest.buildGrid);
   mix(into.densityPressure, latest.densityPressure);
+  mix(into.divergenceSolve, latest.divergenceSolve);
   mix(into.forces, latest.forces);
   mix(into.interaction, latest.interaction);
   mix(into.timeStep, latest.timeStep);
+  mix(into.densitySolve, latest.densitySolve);
   mix(into.integrate, latest.integrate);
   mix(into.objects, latest.objects);
+  mix(into.wallForces, latest.wallForces);
+  mix(into.flow, latest.flow);
+  mix(into.probes, latest.probes);
 }
 
 void drawPanel(Simulation& sim, ViewerState& state, const render::ValueRange& colourRange) {

@@ -12,93 +12,17 @@
 #include <string>
 #include <vector>
 
+#include "sph/calibration.hpp"
 #include "sph/fluid_draw.hpp"
 #include "sph/frame.hpp"
+#include "sph/live_parameters.hpp"
 #include "sph/object_exchange.hpp"
 #include "sph/scene.hpp"
+#include "sph/simulation_options.hpp"
 #include "sph/stats.hpp"
+#include "sph/step_profile.hpp"
 
 namespace sph {
-
-// The values a run uses, derived from the scene (Meteer 2011, §8.1) unless the scene set them.
-struct Calibration {
-  double spacing = 0.0;             // d, m
-  double supportRadius = 0.0;       // h, m
-  double mass = 0.0;                // kg per fluid particle
-  double maxExpectedSpeed = 0.0;    // m/s
-  double soundSpeed = 0.0;          // c0, m/s
-  double stiffness = 0.0;           // k or B of the equation of state
-  double kinematicViscosity = 0.0;  // ν used by the viscous time step condition, m²/s
-  double initialDt = 0.0;           // s
-  double surfaceThreshold = 0.0;    // |∇c| of a surface particle, 1/m
-  bool massFromScene = false;
-  bool maxExpectedSpeedFromScene = false;
-  bool soundSpeedFromScene = false;
-  bool stiffnessFromScene = false;
-  // Fluid–object contact (Meteer 2011, eqs. 13-15), when the scene has objects.
-  double contactStiffness = 0.0;  // k_spring, N/m
-  double contactDamping = 0.0;    // k_damping, N·s/m
-  double contactShear = 0.0;      // k_shear, N·s/m
-  double maxAcceleration = 0.0;   // clamp on a fluid particle's acceleration (§8.3), m/s²
-  bool contactStiffnessFromScene = false;
-  bool contactDampingFromScene = false;
-  bool contactShearFromScene = false;
-  bool maxAccelerationFromScene = false;
-  // interaction.coupling: the objects are boundary particles of the fluid's pressure solve
-  // (Akinci et al. 2012) rather than contact partners.
-  bool objectsAsBoundary = false;
-  std::uint64_t fluidParticles = 0;
-  std::uint64_t objectParticles = 0;
-  std::uint64_t boundaryParticles = 0;
-};
-
-// Wall-clock milliseconds of each stage of the last step (the step's profile).
-struct StepProfile {
-  double buildGrid = 0.0;
-  double densityPressure = 0.0;
-  double divergenceSolve = 0.0;  // DFSPH
-  double forces = 0.0;
-  double interaction = 0.0;  // collisions and contact forces with objects (Meteer 2011, §7)
-  double timeStep = 0.0;
-  double densitySolve = 0.0;  // DFSPH
-  double integrate = 0.0;
-  double objects = 0.0;  // handing the step to the object engine (its own thread by default)
-  double probes = 0.0;   // sampling the scene's probes
-  double total() const {
-    return buildGrid + densityPressure + divergenceSolve + forces + interaction + timeStep +
-           densitySolve + integrate + objects + probes;
-  }
-};
-
-// The incompressible solver's (DFSPH) last step; all zero for the weakly compressible solver.
-struct SolverStats {
-  int densityIterations = 0;     // velocity corrections of the density solve, warm start aside
-  int divergenceIterations = 0;  // the same for the divergence solve
-  double densityError = 0.0;     // average ρ/ρ0 - 1 the step ends with, as the solve predicted
-  double largestDensityError = 0.0;  // of one particle
-  double divergenceError = 0.0;      // average Δt (Dρ/Dt) / ρ0 left by the divergence solve
-  bool converged = true;             // both met their tolerance within their iterations
-};
-
-enum class Backend { Cpu, Cuda, Auto };  // Auto: the GPU when one is present
-
-// How the CPU backend's passes take neighbours: a SIMD batch at a time (the default), or one
-// at a time through the neighbour lists as the GPU does, the reference the first is tested and
-// timed against. The CUDA backend ignores it.
-enum class CpuPasses { Batched, OneAtATime };
-
-struct SimulationOptions {
-  Backend backend = Backend::Cpu;
-  int device = 0;  // CUDA device index
-  CpuPasses cpuPasses = CpuPasses::Batched;
-  // The most fluid neighbours listed per particle; a particle with more finds them in the
-  // grid's cells instead, slower and with the same physics. 0: room for twice the neighbours
-  // of the initial lattice.
-  std::uint32_t neighborListLength = 0;
-  // CPU threads for the simulation's passes, at most 1024; 0: the calling thread's OpenMP
-  // setting (every hardware thread unless the program set it). Results do not depend on it.
-  int threads = 0;
-};
 
 // A frame and its statistics taken at one instant (Simulation::capture) and assembled later,
 // on any thread: the simulation may step meanwhile.
@@ -115,15 +39,6 @@ class FrameCapture {
   struct Impl;
   explicit FrameCapture(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
-};
-
-// What may change while a simulation runs (the viewer's panel), in the scene's units.
-struct LiveParameters {
-  double viscosity = 0.0;       // fluid.viscosity: μ (Müller) or α (artificial)
-  double stiffness = 0.0;       // of the equation of state; the speed of sound follows it
-  Vec3d gravity{0, 0, 0};       // m/s²
-  double surfaceTension = 0.0;  // σ, N/m
-  double influenceRatio = 0.0;  // interaction.influence_ratio (scenes with objects)
 };
 
 class Simulation {
@@ -202,6 +117,9 @@ class Simulation {
   const Scene& scene() const;
   const Calibration& calibration() const;
   const StepProfile& lastProfile() const;
+  // The stages a step of this scene runs, in order, as named in the solver's stage list
+  // (docs/design.md): only those the scene gives work.
+  std::vector<std::string> stageNames() const;
   SolverStats lastSolve() const;
 
   // Each emitter's and each outlet's fluid since the start, in the scene's order.

@@ -7,7 +7,7 @@
 #include "sim/fluid_engine.hpp"
 #include "sim/walls.hpp"
 #include "sph/core/time_step.hpp"
-#include "sph/simulation.hpp"
+#include "sph/calibration.hpp"
 
 namespace sph::sim {
 

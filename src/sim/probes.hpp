@@ -11,7 +11,7 @@
 #include "sim/state_stream.hpp"
 #include "sph/core/probe.hpp"
 #include "sph/scene.hpp"
-#include "sph/simulation.hpp"
+#include "sph/stats.hpp"
 
 namespace sph::sim {
 

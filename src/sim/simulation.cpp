@@ -12,10 +12,8 @@ Simulation::Simulation(const Scene& scene, const SimulationOptions& options)
     : impl_(std::make_unique<Impl>(scene, options)) {}
 Simulation::~Simulation() = default;
 
-// Meteer 2011, §6 and §7, in our order: the forces of this step, the fluid's own and those of
-// contact with objects, act on the positions they were computed at. The incompressible solver
-// (DFSPH) first makes the velocity divergence-free, and last gives the pressure that keeps the
-// density at rest; the weakly compressible one does neither, its pressure is in the forces.
+// The step is its solver's list of stages (sim/wcsph_step.cpp, sim/dfsph_step.cpp), each
+// timed into its StepProfile bucket.
 void Simulation::step(double until) {
   Impl& s = *impl_;
   if (s.scene.objectEngine.type == ObjectEngineKind::Bullet && !s.scene.objects.empty() &&
@@ -24,34 +22,17 @@ void Simulation::step(double until) {
                            ": object_engine.type is \"bullet\": attach its Bullet world before "
                            "stepping (sph::BulletEngine::forScene, sph/bullet_engine.hpp)");
   const backend::ScopedThreadCount passThreads(s.threads);
-  sim::FluidEngine& engine = *s.engine;
-  StepProfile& profile = s.profile;
-  using detail::timedMs;
-  s.surfaceMeasured = false;
-  profile.interaction = timedMs([&] { s.receiveBoundaryObjects(); });
-  profile.buildGrid = timedMs([&] { s.removed += engine.buildGrid(); });
-  profile.densityPressure = timedMs([&] {
-    engine.computeDensityAndPressure();
-    s.advanceDensity();
-  });
-  s.neighboursListed = true;
-  profile.divergenceSolve = timedMs([&] { s.solveDivergence(); });
-  profile.forces = timedMs([&] { engine.computeForces(); });
-  profile.interaction += timedMs([&] { s.interact(); });
-  profile.timeStep = timedMs([&] { s.dt = s.chooseTimeStep(until); });
-  profile.densitySolve = timedMs([&] { s.solveDensity(); });
-  profile.interaction += timedMs([&] { s.collectObjectForces(); });
-  profile.probes = timedMs([&] { s.collectWallForces(); });
-  profile.integrate = timedMs([&] {
-    s.driveInflow();
-    s.clamped += engine.integrate(float(s.dt));
-    s.movedFor = s.dt;
-  });
-  profile.objects = timedMs([&] { s.advanceObjects(); });
-  s.time = (s.dt == until - s.time) ? until : s.time + s.dt;
-  profile.integrate += timedMs([&] { s.emit(); });
+  s.until = until;
+  s.profile = StepProfile{};
+  for (const Impl::Stage& stage : s.stages)
+    s.profile.*stage.bucket += detail::timedMs([&] { (s.*stage.run)(); });
   ++s.steps;
-  profile.probes += timedMs([&] { s.sampleProbes(); });
+}
+
+std::vector<std::string> Simulation::stageNames() const {
+  std::vector<std::string> names;
+  for (const Impl::Stage& stage : impl_->stages) names.emplace_back(stage.name);
+  return names;
 }
 
 void Simulation::attachObjectEngine(std::shared_ptr<ObjectExchange> exchange) {
@@ -71,6 +52,7 @@ void Simulation::attachObjectEngine(std::shared_ptr<ObjectExchange> exchange) {
   s.interactionParams = sim::interactionParameters(s.scene, s.calibration);
   s.externalExchange = std::move(exchange);
   s.seenPublication = 0;
+  s.stages = s.stageList();  // now with the objects' stages
 }
 
 void Simulation::containFluid(std::int32_t object, const std::vector<std::uint32_t>& ids) {

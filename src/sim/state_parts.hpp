@@ -13,7 +13,7 @@
 #include "sim/state_stream.hpp"
 #include "sph/object_exchange.hpp"
 #include "sph/scene.hpp"
-#include "sph/simulation.hpp"
+#include "sph/live_parameters.hpp"
 
 namespace sph::sim {
 

@@ -1,0 +1,26 @@
+// The weakly compressible step: Müller, Charypar & Gross 2003's SPH, with the interaction of
+// Meteer 2011 (§6 and §7, in our order). The pressure comes from the density by the equation of
+// state and acts in the forces; the forces of the fluid and of the contacts with objects act
+// on the positions they were computed at.
+#include "sim/simulation_impl.hpp"
+
+namespace sph {
+
+std::vector<Simulation::Impl::Stage> Simulation::Impl::wcsphStages() const {
+  std::vector<Stage> list;
+  list.push_back({"build grid", &StepProfile::buildGrid, &Impl::buildGrid});
+  list.push_back({"density and pressure", &StepProfile::densityPressure, &Impl::sumDensity});
+  // With continuity the sums only list the neighbours; the density is integrated.
+  if (params.continuityDensity)
+    list.push_back({"continuity density", &StepProfile::densityPressure, &Impl::advanceDensity});
+  list.push_back({"forces", &StepProfile::forces, &Impl::computeForces});
+  if (coupled())
+    list.push_back({"contacts with objects", &StepProfile::interaction, &Impl::contactObjects});
+  list.push_back({"time step", &StepProfile::timeStep, &Impl::chooseTimeStep});
+  if (coupled())
+    list.push_back({"forces on objects", &StepProfile::interaction, &Impl::collectObjectForces});
+  addStepEnd(list);
+  return list;
+}
+
+}  // namespace sph
