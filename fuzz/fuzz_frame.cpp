@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "io/frame_reader.hpp"
+#include "sph/io/frame_reader.hpp"
 #include "io/pvd_reader.hpp"
 #include "sph/error.hpp"
 

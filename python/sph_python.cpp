@@ -15,10 +15,10 @@
 #include <utility>
 #include <vector>
 
-#include "io/frame_reader.hpp"
-#include "io/frame_writer.hpp"
 #include "sph/box_drop_scene.hpp"
 #include "sph/error.hpp"
+#include "sph/io/frame_reader.hpp"
+#include "sph/io/frame_writer.hpp"
 #include "sph/object_exchange.hpp"
 #include "sph/scene_file.hpp"
 #include "sph/simulation.hpp"

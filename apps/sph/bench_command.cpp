@@ -7,7 +7,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "backend/cpu_parallel.hpp"
 #include "commands.hpp"
 #include "report.hpp"
 #include "sph/box_drop_scene.hpp"
@@ -15,6 +14,7 @@
 #include "sph/error.hpp"
 #include "sph/scene_file.hpp"
 #include "sph/simulation.hpp"
+#include "sph/threads.hpp"
 
 namespace sph::cli {
 
@@ -108,7 +108,7 @@ nlohmann::json timeScene(const std::string& label, const Scene& scene,
 }  // namespace
 
 int benchCommand(const BenchOptions& options) {
-  backend::setThreadCount(options.threads);
+  setThreadCount(options.threads);
   const SimulationOptions where = simulationOptions(options.backend, options.device);
   const bool gpu = where.backend == Backend::Cuda ||
                    (where.backend == Backend::Auto && !queryGpus().devices.empty());
@@ -116,7 +116,7 @@ int benchCommand(const BenchOptions& options) {
   std::printf(
       "sph bench: box drop, backend %s, %d threads, %d warm-up + %d timed steps; "
       "median ms per step\n",
-      backendName, backend::threadCount(), options.warmupSteps, options.steps);
+      backendName, threadCount(), options.warmupSteps, options.steps);
   std::printf("%-22s %-6s %10s %9s %9s %9s %9s %9s %9s %9s %9s %9s %6s %10s %9s\n", "scene",
               "solver", "particles", "step", "grid", "density", "solve", "forces", "contacts", "dt",
               "integrate", "objects", "iters", "sim s/step", "real time");
@@ -151,7 +151,7 @@ int benchCommand(const BenchOptions& options) {
     std::ofstream out(options.json);
     for (nlohmann::json& result : results) {
       result["backend"] = backendName;
-      result["threads"] = backend::threadCount();
+      result["threads"] = threadCount();
       result["batched_passes"] = !gpu && where.cpuPasses == CpuPasses::Batched;
       out << result.dump() << '\n';
     }

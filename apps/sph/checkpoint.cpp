@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/frame_writer.hpp"
 #include "sph/error.hpp"
+#include "sph/io/frame_writer.hpp"
 #include "sph/scene_file.hpp"
 
 #ifndef SPH_VERSION

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "sim/state_stream.hpp"
+#include "sph/checksum.hpp"
 #include "sph/error.hpp"
 
 #ifndef SPH_VERSION
@@ -55,8 +55,7 @@ std::string checkpointBytes(const nlohmann::json& header, const std::string& sta
   appendWord(out, state.size());
   out += headerText;
   out += state;
-  appendWord(out, sim::fnv1a(state.data(), state.size(),
-                             sim::fnv1a(headerText.data(), headerText.size())));
+  appendWord(out, fnv1a(state.data(), state.size(), fnv1a(headerText.data(), headerText.size())));
   return out;
 }
 
@@ -71,7 +70,7 @@ Checkpoint parseCheckpoint(const std::string& bytes, const std::filesystem::path
   const char* header = bytes.data() + sizeof kMagic + 16;
   const char* state = header + headerBytes;
   const std::uint64_t checksum = wordAt(bytes, bytes.size() - 8);
-  if (sim::fnv1a(state, stateBytes, sim::fnv1a(header, headerBytes)) != checksum)
+  if (fnv1a(state, stateBytes, fnv1a(header, headerBytes)) != checksum)
     refuse(file, "corrupted: its checksum does not match its contents");
 
   Checkpoint c;

@@ -1,9 +1,9 @@
 // sph info: what this binary was built with and what it can run on.
 #include <cstdio>
 
-#include "backend/cpu_parallel.hpp"
 #include "commands.hpp"
 #include "sph/devices.hpp"
+#include "sph/threads.hpp"
 
 #ifndef SPH_VERSION
 #define SPH_VERSION "unknown"
@@ -36,7 +36,7 @@ int infoCommand() {
   std::printf("sph %s (%s build, %s)\n", SPH_VERSION, SPH_BUILD_TYPE, __VERSION__);
   std::printf("backends:\n");
 #ifdef _OPENMP
-  std::printf("  cpu   OpenMP %d, %d threads available\n", _OPENMP, backend::threadCount());
+  std::printf("  cpu   OpenMP %d, %d threads available\n", _OPENMP, threadCount());
 #else
   std::printf("  cpu   serial (built without OpenMP)\n");
 #endif

@@ -12,12 +12,12 @@
 #include "camera.hpp"
 #include "colour_map.hpp"
 #include "commands.hpp"
-#include "io/frame_reader.hpp"
 #include "offscreen_context.hpp"
 #include "particle_renderer.hpp"
 #include "png_writer.hpp"
 #include "render_run_info.hpp"
 #include "sph/error.hpp"
+#include "sph/io/frame_reader.hpp"
 #include "video.hpp"
 
 namespace sph::cli {

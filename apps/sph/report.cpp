@@ -2,9 +2,9 @@
 
 #include <string>
 
-#include "backend/cpu_parallel.hpp"
-#include "io/frame_writer.hpp"
 #include "sph/error.hpp"
+#include "sph/io/frame_writer.hpp"
+#include "sph/threads.hpp"
 
 namespace sph::cli {
 

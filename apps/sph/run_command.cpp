@@ -8,17 +8,17 @@
 #include <optional>
 #include <sstream>
 
-#include "backend/cpu_parallel.hpp"
 #include "checkpoint.hpp"
 #include "commands.hpp"
-#include "io/frame_writer.hpp"
 #include "progress.hpp"
 #include "report.hpp"
 #include "run_output.hpp"
 #include "scene_engine.hpp"
 #include "sph/error.hpp"
+#include "sph/io/frame_writer.hpp"
 #include "sph/scene_file.hpp"
 #include "sph/simulation.hpp"
+#include "sph/threads.hpp"
 
 namespace sph::cli {
 
@@ -48,7 +48,7 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
       {"failure", record.failure},
       {"scene_file", sim.scene().sourcePath},
       {"backend", sim.backendName()},
-      {"threads", backend::threadCount()},
+      {"threads", threadCount()},
       {"calibration", calibrationJson(sim.calibration())},
       {"simulated_time", sim.time()},
       {"steps", sim.stepCount()},
@@ -85,7 +85,7 @@ Scene sceneOf(const RunOptions& options, const std::optional<Checkpoint>& resume
 }  // namespace
 
 int runCommand(const RunOptions& options) {
-  backend::setThreadCount(options.threads);
+  setThreadCount(options.threads);
   std::optional<Checkpoint> resumed;
   if (!options.resume.empty()) resumed = readLatestCheckpoint(options.resume);
   const Scene scene = sceneOf(options, resumed);
@@ -131,7 +131,7 @@ int runCommand(const RunOptions& options) {
       // The 2021 CUDA SPH tutorial's memory report: what the GPU holds and has free.
       printGpus(stdout);
     } else {
-      std::printf("  backend              cpu, %d threads\n", backend::threadCount());
+      std::printf("  backend              cpu, %d threads\n", threadCount());
     }
     std::printf("writing %s frames at %g per second to %s\n", formatName(scene.output.format),
                 scene.output.fps, output.dir().c_str());

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "backend/cpu_parallel.hpp"
-#include "io/frame_writer.hpp"
 #include "sph/error.hpp"
+#include "sph/io/frame_writer.hpp"
+#include "sph/threads.hpp"
 
 namespace sph::cli {
 
@@ -149,7 +149,7 @@ int RunOutput::framesWritten() const {
 }
 
 void RunOutput::writeQueued() {
-  backend::runSeriallyOnThisThread();  // the frame's sums, beside the stepping threads
+  runSeriallyOnThisThread();  // the frame's sums, beside the stepping threads
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
     changed_.wait(lock, [&] { return !queue_.empty() || stopping_; });

@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "checkpoint.hpp"
-#include "io/probes_writer.hpp"
-#include "io/pvd_series.hpp"
-#include "io/stats_writer.hpp"
+#include "sph/io/probes_writer.hpp"
+#include "sph/io/pvd_series.hpp"
+#include "sph/io/stats_writer.hpp"
 #include "sph/frame.hpp"
 #include "sph/scene.hpp"
 #include "sph/simulation.hpp"

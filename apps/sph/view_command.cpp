@@ -1,9 +1,9 @@
 // sph view: the interactive viewer (apps/view) on a scene file.
 #include <cstdio>
 
-#include "backend/cpu_parallel.hpp"
 #include "commands.hpp"
 #include "sph/scene_file.hpp"
+#include "sph/threads.hpp"
 #include "viewer.hpp"
 
 namespace sph::cli {
@@ -13,7 +13,7 @@ bool viewerBuilt() {
 }
 
 int viewCommand(const ViewCommandOptions& options) {
-  backend::setThreadCount(options.threads);
+  setThreadCount(options.threads);
   const Scene scene = loadScene(options.scene, options.overrides);
   view::ViewOptions view;
   view.simulation = simulationOptions(options.backend, options.device);

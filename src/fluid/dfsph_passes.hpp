@@ -1,5 +1,5 @@
 // The three passes of the incompressible solver (core/dfsph.hpp), each written once for one
-// neighbour at a time and for a SIMD batch (solver_walk.hpp): the factor β_i, the predicted
+// neighbour at a time and for a SIMD batch (neighbor_walk.hpp): the factor β_i, the predicted
 // density error with the K_i that undoes it, and the velocity correction K gives.
 #pragma once
 
@@ -37,8 +37,11 @@ struct FactorSum {
 
 // β_i (core/dfsph.hpp), into solverFactor.
 struct FactorPass {
+  static constexpr bool kGradients = true;
   static constexpr bool kFirstOfStep = true;
+  static constexpr bool kSkipsCoincident = false;
   static constexpr bool kWalls = true;
+  static constexpr bool kObjects = true;
   float volume;    // of a fluid particle, m/ρ0
   float smallest;  // dfsphSmallestFactorSum
   float* factor;
@@ -86,11 +89,14 @@ struct RateSum {
 // particle is never pulled towards its neighbours: the free surface reads low) and the K_i that
 // would undo it alone (one Jacobi step, Bender & Koschier 2017).
 struct RatePass {
+  static constexpr bool kGradients = true;
   static constexpr bool kFirstOfStep = false;
+  static constexpr bool kSkipsCoincident = false;
   static constexpr std::uint32_t kColumns = 6;  // x, y, z, v
   // Boundary particles do not move within a step: their share is ρ0 (v_i·G_w - Σ ψ_b v_b·∇W_ib),
   // kept by the factor pass.
   static constexpr bool kWalls = false;
+  static constexpr bool kObjects = false;
   SolverTarget target;
   float mass, restDensity, dt;
   std::uint32_t minNeighbours;  // SolverSettings
@@ -142,9 +148,12 @@ struct RatePass {
 // The factor and the first rate pass of a step in one walk over the neighbours: the rate pass
 // reads only particle i's own factor, which the factor pass has just summed.
 struct FactorAndRatePass {
+  static constexpr bool kGradients = true;
   static constexpr bool kFirstOfStep = true;
+  static constexpr bool kSkipsCoincident = false;
   static constexpr std::uint32_t kColumns = RatePass::kColumns;
   static constexpr bool kWalls = true;
+  static constexpr bool kObjects = true;
   FactorPass factor;
   RatePass rate;
 
@@ -187,10 +196,13 @@ struct VelocitySum {
 // The velocity correction of the K's just computed: Δv_i = Δt Σ_j -m_j (K_i + K_j) ∇W_ij, a
 // wall particle mirroring K_i. Adds K_i to the solve's total.
 struct VelocityPass {
+  static constexpr bool kGradients = true;
   static constexpr bool kFirstOfStep = false;
+  static constexpr bool kSkipsCoincident = false;
   static constexpr std::uint32_t kColumns = 4;  // x, y, z, K
   // The walls mirror K_i: their share is -2 ρ0 K_i G_w, from the factor pass.
   static constexpr bool kWalls = false;
+  static constexpr bool kObjects = false;
   float mass, restDensity, dt;
   const Vec4* wallGradient;
   const float* stiffnessRecords;

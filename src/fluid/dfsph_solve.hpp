@@ -14,11 +14,11 @@
 #include "fluid/coarse_correction.hpp"
 #include "fluid/dfsph_passes.hpp"
 #include "fluid/kernel_dispatch.hpp"
-#include "fluid/solver_walk.hpp"
+#include "fluid/neighbor_walk.hpp"
 
 namespace sph::fluid {
 
-// The listed pairs' gradients are kept for the step (solver_walk.hpp) while they take no more
+// The listed pairs' gradients are kept for the step (neighbor_walk.hpp) while they take no more
 // memory than this. Kept, the dam break's DFSPH ran 20 % faster at 13,500 particles (3.5 MB of
 // them); at 67,626 (17 MB) 7 % slower, the passes' extra stream costing more than the square
 // roots it saved.
@@ -178,8 +178,8 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
   // Only the density solve starts warm: the divergence solve comes first in a step, and its
   // first pass finds the step's factors and wall gradients that a warm start would need.
   if (settings.warmStart && target == SolverTarget::RestDensity)
-    runSolverPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, params.periodic, walk,
-                  correct, gradients);
+    runPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, params.periodic, walk,
+            correct, gradients);
   SolverReport report;
   for (;;) {
     if (report.iterations == 0 && target == SolverTarget::NoDivergence) {
@@ -187,11 +187,11 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
           {params.mass / params.restDensity, dfsphSmallestFactorSum(params.h),
            fluid.solverFactor.data(), fluid.solverWallGradient.data()},
           rate};
-      runSolverPass(fluid, grid, boundary, objects, velocityRecords, kernels, params.periodic, walk,
-                    first, gradients);
+      runPass(fluid, grid, boundary, objects, velocityRecords, kernels, params.periodic, walk,
+              first, gradients);
     } else {
-      runSolverPass(fluid, grid, boundary, objects, velocityRecords, kernels, params.periodic, walk,
-                    rate, gradients);
+      runPass(fluid, grid, boundary, objects, velocityRecords, kernels, params.periodic, walk, rate,
+              gradients);
     }
     report.averageError = averageError(fluid);
     const bool done =
@@ -206,8 +206,8 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
     if (report.iterations == 0 && target == SolverTarget::RestDensity &&
         settings.coarseShare > 0.0f)
       addCoarseCorrection(fluid, grid, boundary, params, dt, settings.coarseShare, coarse);
-    runSolverPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, params.periodic, walk,
-                  correct, gradients);
+    runPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, params.periodic, walk,
+            correct, gradients);
     ++report.iterations;
   }
 }

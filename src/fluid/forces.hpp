@@ -5,86 +5,134 @@
 // field is summed only for surface tension, which needs it: it is a fifth of the pass.
 #pragma once
 
-#include "fluid/forces_batched.hpp"
+#include <cstdint>
+#include <type_traits>
+
 #include "fluid/kernel_dispatch.hpp"
-#include "fluid/neighbors.hpp"
+#include "fluid/neighbor_walk.hpp"
 #include "fluid/pair_terms.hpp"
 #include "fluid/particles.hpp"
-#include "sph/core/read_only.hpp"
 
 namespace sph::fluid {
 
+// What the force pass reads of a neighbour, 8 floats, so that 8 neighbours load as 8 rows and
+// transpose into batches.
+struct ForceRecord {
+  enum Field { kX, kY, kZ, kPressureTerm, kVX, kVY, kVZ, kDensity };
+};
+
+// Particle i's acceleration: ForceTerms (pair_terms.hpp) over its neighbours, walls and objects'
+// particles (neighbor_walk.hpp), with gravity, the external acceleration and surface tension.
+template <class Options, class Kernels>
+struct ForcePass {
+  static constexpr bool kGradients = false;  // pressure, viscosity and colour read the pair
+  static constexpr bool kSkipsCoincident = false;
+  static constexpr bool kWalls = true;
+  static constexpr bool kObjects = true;
+  static constexpr std::uint32_t kColumns = 8;
+  // The parameters every pair reads, made once a pass for each width.
+  ForceConstants<float, Vec3, Kernels> constants;
+#if !defined(__CUDACC__)
+  ForceConstants<FloatBatch, BatchVec3, Kernels> batchConstants;
+#endif
+  const Vec4* state;
+  const Vec4* velocity;
+  const std::uint32_t* id;
+  const Vec4* external;  // by id; null: none
+  Vec4* acceleration;
+
+  template <class S, class V>
+  SPH_HD_INLINE const ForceConstants<S, V, Kernels>& constantsFor() const {
+#if !defined(__CUDACC__)
+    if constexpr (std::is_same_v<S, FloatBatch>) return batchConstants;
+#endif
+    if constexpr (std::is_same_v<S, float>) return constants;
+  }
+  template <class S, class V>
+  struct Sum {
+    ForceTerms<S, V, Options, Kernels> terms;
+    ForceSums<S, V> sums;
+  };
+  template <class S, class V>
+  SPH_HD_INLINE Sum<S, V> start(std::size_t i) const {
+    return {ForceTerms<S, V, Options, Kernels>(constantsFor<S, V>(), unpackPressureState(state[i]),
+                                               xyz(velocity[i])),
+            ForceSums<S, V>{}};
+  }
+  template <class S, class V, class M, class C>
+  SPH_HD_INLINE void addFluid(Sum<S, V>& sum, const Pair<S, V, M>& pair, const C& columns) const {
+    using R = ForceRecord;
+    sum.terms.addFluid(sum.sums, pair, V{columns[R::kVX], columns[R::kVY], columns[R::kVZ]},
+                       columns[R::kPressureTerm], columns[R::kDensity]);
+  }
+  template <class S, class V, class M>
+  SPH_HD_INLINE void addWall(Sum<S, V>& sum, const Pair<S, V, M>& pair, S volume) const {
+    sum.terms.addWall(sum.sums, pair, volume);
+  }
+  template <class S, class V, class M>
+  SPH_HD_INLINE void addMovingWall(Sum<S, V>& sum, const Pair<S, V, M>& pair, S volume,
+                                   const V& velocityB) const {
+    sum.terms.addObject(sum.sums, pair, volume, velocityB);
+  }
+  template <class S, class V>
+  SPH_HD_INLINE void finish(std::size_t i, const Sum<S, V>& sum) const {
+    const Vec3 extra = external ? xyz(external[id[i]]) : Vec3{0.0f, 0.0f, 0.0f};
+    acceleration[i] = makeVec4(sum.terms.total(sum.sums, extra), 0.0f);
+  }
+};
+
 namespace detail {
 
-template <class B, class Options, class Kernels>
-void forcePass(FluidParticles<B>& fluid, const Grid<B>& grid, const BoundaryParticles<B>& boundary,
-               const BoundaryParticles<B>& objects, const FluidParameters& params,
-               Kernels kernels) {
-  const NeighborLists lists = neighborLists(fluid, grid);
-  const WallCells walls = wallCells(boundary);
-  const WallCells objectCells = wallCells(objects);
-  const Vec4* object = objects.position.data();  // w: volume ψ_k
-  const Vec4* objectVelocity = objects.velocity.data();
+// The force records of the particles as they are now, and of the padding: far away, with no
+// pressure or velocity and a density of 1 to divide by.
+template <class B, class Options>
+void writeForceRecords(FluidParticles<B>& fluid) {
+  using R = ForceRecord;
+  const std::size_t n = fluid.count;
+  fluid.batchRecords.resize(kRecordFields * (n + kBatchPadding));
+  float* records = fluid.batchRecords.data();
   const Vec4* position = fluid.position.data();
   const Vec4* velocity = fluid.velocity.data();
   const Vec4* state = fluid.pressureState.data();
-  const Vec4* wall = boundary.position.data();  // w: volume ψ_b
-  Vec4* acceleration = fluid.acceleration.data();
-  const std::uint32_t* id = fluid.id.data();
-  const Vec4* external = fluid.externalById.size() ? fluid.externalById.data() : nullptr;
-  const FluidParameters p = params;
-  const float h2 = p.h * p.h;
-
-  const ForceConstants<float, Vec3, Kernels> constants(p, kernels);
   B::forEach(
-      fluid.count, SPH_LAMBDA(std::size_t i) {
-        const Vec3 xi = xyz(position[i]);
-        const bool seam = nearSeam(p.periodic, xi);
-        const ForceTerms<float, Vec3, Options, Kernels> terms(
-            constants, unpackPressureState(state[i]), xyz(velocity[i]));
-        ForceSums<float, Vec3> sums;
-        forEachListedNeighbor(lists, i, xi, [&](std::uint32_t j) {
-          const Vec3 rij = separation(p.periodic, seam, xi, xyz(readOnly(position + j)));
-          const float r2 = lengthSquared(rij);
-          if (r2 >= h2) return;
-          const PressureState sj = unpackPressureState(readOnly(state + j));
-          terms.addFluid(sums, makePair(rij, r2, true, h2), xyz(readOnly(velocity + j)),
-                         pressureTerm<Options>(sj), sj.density);
-        });
-        forEachWallNeighbor(walls, xi, [&](std::uint32_t b) {
-          const Vec4 xb = readOnly(wall + b);
-          const Vec3 rib = xi - xyz(xb);
-          const float r2 = lengthSquared(rib);
-          if (r2 >= h2 || r2 <= 0.0f) return;
-          terms.addWall(sums, makePair(rib, r2, true, h2), xb.w);
-        });
-        forEachWallNeighbor(objectCells, xi, [&](std::uint32_t k) {
-          const Vec4 xk = readOnly(object + k);
-          const Vec3 rik = xi - xyz(xk);
-          const float r2 = lengthSquared(rik);
-          if (r2 >= h2 || r2 <= 0.0f) return;
-          terms.addObject(sums, makePair(rik, r2, true, h2), xk.w,
-                          xyz(readOnly(objectVelocity + k)));
-        });
-        const Vec3 extra = external ? xyz(external[id[i]]) : Vec3{0.0f, 0.0f, 0.0f};
-        acceleration[i] = makeVec4(terms.total(sums, extra), 0.0f);
+      n + kBatchPadding, SPH_LAMBDA(std::size_t i) {
+        float* r = records + kRecordFields * i;
+        if (i >= n) {
+          r[R::kX] = r[R::kY] = r[R::kZ] = 1e30f;
+          r[R::kPressureTerm] = r[R::kVX] = r[R::kVY] = r[R::kVZ] = 0.0f;
+          r[R::kDensity] = 1.0f;
+          return;
+        }
+        const Vec4 x = position[i], v = velocity[i];
+        const PressureState s = unpackPressureState(state[i]);
+        r[R::kX] = x.x;
+        r[R::kY] = x.y;
+        r[R::kZ] = x.z;
+        r[R::kPressureTerm] = pressureTerm<Options>(s);
+        r[R::kVX] = v.x;
+        r[R::kVY] = v.y;
+        r[R::kVZ] = v.z;
+        r[R::kDensity] = s.density;
       });
 }
 
 template <class B, class Options>
 void forcePassWithKernels(FluidParticles<B>& fluid, const Grid<B>& grid,
                           const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
-                          const FluidParameters& params, [[maybe_unused]] NeighborWalk walk) {
+                          const FluidParameters& params, NeighborWalk walk) {
+  writeForceRecords<B, Options>(fluid);
   withKernels(params, [&](auto kernels) {
+    using Kernels = decltype(kernels);
+    const ForcePass<Options, Kernels> pass {
+      ForceConstants<float, Vec3, Kernels>(params, kernels),
 #if !defined(__CUDACC__)
-    if constexpr (B::kBatches) {
-      if (walk == NeighborWalk::Batched) {
-        forcePassBatched<Options>(fluid, grid, boundary, objects, params, kernels);
-        return;
-      }
-    }
+          ForceConstants<FloatBatch, BatchVec3, Kernels>(params, kernels),
 #endif
-    forcePass<B, Options>(fluid, grid, boundary, objects, params, kernels);
+          fluid.pressureState.data(), fluid.velocity.data(), fluid.id.data(),
+          fluid.externalById.size() ? fluid.externalById.data() : nullptr, fluid.acceleration.data()
+    };
+    runPass(fluid, grid, boundary, objects, fluid.batchRecords.data(), kernels, params.periodic,
+            walk, pass);
   });
 }
 

@@ -50,14 +50,12 @@ struct FluidParticles {
   Buffer<Vec4> scratch4;
   Buffer<std::uint32_t> scratchId;
   Buffer<float> scratchDensity;
-  // The CPU's SIMD passes: positions as three arrays, padded so that a batch load anywhere in
-  // range stays inside (n + kBatchPadding). Empty on the GPU.
+  // The CPU's SIMD density pass: positions as three arrays, padded so that a batch load
+  // anywhere in range stays inside (n + kBatchPadding). Empty on the GPU.
   Buffer<float> batchX, batchY, batchZ;
-  Buffer<float> batchVX, batchVY, batchVZ;
-  // pressureState split: p/ρ², p, ρ (written by the density pass)
-  Buffer<float> batchPOverRho2, batchPressure, batchDensity;
-  // What the force pass reads of a listed neighbour, 8 floats a particle, so that 8 neighbours
-  // load as 8 rows and transpose into batches: x, y, z, pressure term, vx, vy, vz, ρ.
+  // What the force or the continuity pass reads of a neighbour, 8 floats a particle (n +
+  // kBatchPadding), so that 8 neighbours load as 8 rows and transpose into batches
+  // (ForceRecord, ContinuityRecord; neighbor_walk.hpp).
   Buffer<float> batchRecords;
   // The incompressible solver (DFSPH, dfsph_solve.hpp), 8 floats a particle as above (n +
   // kBatchPadding): velocityRecords x, y, z, vx, vy, vz, read while stiffnessRecords are
@@ -70,7 +68,7 @@ struct FluidParticles {
   Buffer<float> solverSignedError;    // the same, signed: < 0 where the fluid would expand
   Buffer<float> coarseStiffness;      // the coarse level's K (coarse_correction.hpp)
   // ∇W_ij = g_ij (x_i - x_j) of each listed neighbour (n × neighborStride, beside neighbors),
-  // kept by the step's first solver pass for the others (solver_walk.hpp)
+  // kept by the step's first solver pass for the others (neighbor_walk.hpp)
   Buffer<float> pairGradient;
   // Kept across steps, reordered with the particles by buildGrid: x, the density solve's
   // total K; y, the divergence solve's total K times its Δt. Empty unless the solver runs.

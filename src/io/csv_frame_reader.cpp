@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "io/frame_reader.hpp"
+#include "sph/io/frame_reader.hpp"
 #include "io/frame_reader_support.hpp"
 
 namespace sph::io {

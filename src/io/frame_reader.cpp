@@ -1,4 +1,4 @@
-#include "io/frame_reader.hpp"
+#include "sph/io/frame_reader.hpp"
 
 #include <algorithm>
 #include <cerrno>

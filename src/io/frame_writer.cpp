@@ -1,4 +1,4 @@
-#include "io/frame_writer.hpp"
+#include "sph/io/frame_writer.hpp"
 
 #include <cerrno>
 #include <cstdio>

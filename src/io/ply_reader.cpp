@@ -11,7 +11,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "io/frame_reader.hpp"
+#include "sph/io/frame_reader.hpp"
 #include "io/frame_reader_support.hpp"
 
 namespace sph::io {

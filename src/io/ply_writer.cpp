@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "io/frame_writer.hpp"
+#include "sph/io/frame_writer.hpp"
 
 namespace sph::io {
 

@@ -1,4 +1,4 @@
-#include "io/probes_writer.hpp"
+#include "sph/io/probes_writer.hpp"
 
 #include <cmath>
 #include <string>

@@ -1,9 +1,9 @@
-#include "io/pvd_series.hpp"
+#include "sph/io/pvd_series.hpp"
 
 #include <ostream>
 #include <utility>
 
-#include "io/frame_writer.hpp"
+#include "sph/io/frame_writer.hpp"
 
 namespace sph::io {
 namespace {

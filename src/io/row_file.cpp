@@ -1,4 +1,4 @@
-#include "io/row_file.hpp"
+#include "sph/io/row_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "io/stats_writer.hpp"
+#include "sph/io/stats_writer.hpp"
 
 #include <cinttypes>
 #include <string>

@@ -7,7 +7,7 @@
 #include <map>
 #include <string>
 
-#include "io/frame_reader.hpp"
+#include "sph/io/frame_reader.hpp"
 #include "io/frame_reader_support.hpp"
 
 namespace sph::io {

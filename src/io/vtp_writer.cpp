@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "io/frame_writer.hpp"
+#include "sph/io/frame_writer.hpp"
 
 namespace sph::io {
 

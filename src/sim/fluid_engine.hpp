@@ -1,6 +1,7 @@
-// The fluid state and its stages on one backend. Simulation drives the stages through this
-// interface (one virtual call per stage, never per particle); EngineImpl<B> implements it once
-// for every backend.
+// The fluid state and its stages on one backend, behind interfaces split by concern: the
+// step's stages, what the time-step guard measures, the fluid's side of the objects' coupling,
+// and what outputs read. Simulation calls them once per stage, never per particle;
+// EngineImpl<B> implements them once for every backend.
 #pragma once
 
 #include <cstdint>
@@ -66,14 +67,10 @@ struct HostWalls {
   std::vector<Vec4> position;  // w: volume
 };
 
-class FluidEngine {
+// The fluid's stages of a step, in order (the solvers' stage lists, sim/*_step.cpp).
+class FluidStages {
  public:
-  virtual ~FluidEngine() = default;
-  virtual const char* backendName() const = 0;
-  virtual std::size_t fluidCount() const = 0;
-  virtual std::size_t wallCount() const = 0;
-
-  // The stages of a step, in order.
+  virtual ~FluidStages() = default;
   virtual std::size_t buildGrid() = 0;  // returns the particles removed
   virtual void computeDensityAndPressure() = 0;
   // From now on the density is state, integrated from its rate of change (continuity): the
@@ -84,7 +81,6 @@ class FluidEngine {
   // (fluid/integrate_density.hpp), and pressure from it.
   virtual void integrateDensity(float dt) = 0;
   virtual void computeForces() = 0;
-  virtual fluid::StepMeasures measureStep() = 0;
   // The incompressible solver (DFSPH): its records at this step's positions, after the density
   // pass; then each solve corrects the velocity (NoDivergence, first: it also finds the
   // factors) or the acceleration (RestDensity, after the other forces, over the step dt).
@@ -100,12 +96,25 @@ class FluidEngine {
                             std::uint32_t firstId) = 0;
   // Flow out: the particles each outlet has removed since the start (buildGrid removes them).
   virtual std::vector<std::uint64_t> drainedByOutlet() const = 0;
-  // Outside the step: |∇c| at the present positions into acceleration.w (the surface flags),
-  // from the last density pass's neighbours.
-  virtual void measureSurface() = 0;
+  // x, y, z, 0 per fluid particle id; empty removes the external accelerations.
+  virtual void setExternalAcceleration(const std::vector<Vec4>& byId) = 0;
+  // New values for the next steps (Simulation::setLiveParameters); the particles stay.
+  virtual void setParameters(const fluid::FluidParameters& params) = 0;
+};
 
-  // The interaction with objects (Meteer 2011, §7). A new publication of the objects' surface
-  // particles; returns their largest speed.
+// What the time-step guard reads of the fluid (sim/time_step_guard.cpp).
+class FluidMeasures {
+ public:
+  virtual ~FluidMeasures() = default;
+  virtual fluid::StepMeasures measureStep() = 0;
+  virtual fluid::BadParticle findBadParticle(float maxDensityError) const = 0;
+};
+
+// The fluid's side of the interaction with objects (Meteer 2011, §7; sim/object_coupling.cpp).
+class FluidObjectSide {
+ public:
+  virtual ~FluidObjectSide() = default;
+  // A new publication of the objects' surface particles; returns their largest speed.
   virtual float setObjectSurface(const ObjectSurface& surface,
                                  const interaction::InteractionParameters& params) = 0;
   // Adds the contact forces to the fluid's accelerations; returns the pairs in contact.
@@ -119,8 +128,16 @@ class FluidEngine {
   virtual HostContainment downloadContainment() const = 0;
   // Leak tracking as downloadContainment gave it (a saved simulation state).
   virtual void uploadContainment(const HostContainment& state) = 0;
+};
 
-  virtual fluid::BadParticle findBadParticle(float maxDensityError) const = 0;
+// What frames, statistics, probes, saved states and renderers read of the fluid
+// (sim/simulation_output.cpp, simulation_state.cpp).
+class FluidOutputs {
+ public:
+  virtual ~FluidOutputs() = default;
+  // Outside the step: |∇c| at the present positions into acceleration.w (the surface flags),
+  // from the last density pass's neighbours.
+  virtual void measureSurface() = 0;
   // Copies the fluid out as it is now, and waits for the copy.
   HostParticles download() const { return beginDownload()->take(); }
   // Copies the fluid out as it is now without waiting: the GPU snapshots its arrays and copies
@@ -143,10 +160,17 @@ class FluidEngine {
   // The fluid into arrays in this backend's memory, for a renderer (target checked by the
   // caller). On the GPU the writes are queued on the default stream.
   virtual void writeForDrawing(const FluidDrawTarget& target, float surfaceThreshold) const = 0;
-  // x, y, z, 0 per fluid particle id; empty removes the external accelerations.
-  virtual void setExternalAcceleration(const std::vector<Vec4>& byId) = 0;
-  // New values for the next steps (Simulation::setLiveParameters); the particles stay.
-  virtual void setParameters(const fluid::FluidParameters& params) = 0;
+};
+
+// The fluid state and its stages on one backend, seen by concern.
+class FluidEngine : public FluidStages,
+                    public FluidMeasures,
+                    public FluidObjectSide,
+                    public FluidOutputs {
+ public:
+  virtual const char* backendName() const = 0;
+  virtual std::size_t fluidCount() const = 0;
+  virtual std::size_t wallCount() const = 0;
 };
 
 struct EngineSetup {

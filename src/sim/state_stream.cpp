@@ -18,6 +18,10 @@ struct Header {
 
 }  // namespace
 
+}  // namespace sph::sim
+
+namespace sph {
+
 std::uint64_t fnv1a(const char* data, std::size_t n, std::uint64_t hash) {
   for (std::size_t k = 0; k < n; ++k) {
     hash ^= static_cast<unsigned char>(data[k]);
@@ -25,6 +29,10 @@ std::uint64_t fnv1a(const char* data, std::size_t n, std::uint64_t hash) {
   }
   return hash;
 }
+
+}  // namespace sph
+
+namespace sph::sim {
 
 void StateWriter::finish(std::ostream& out) const {
   Header header{};

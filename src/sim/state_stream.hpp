@@ -14,6 +14,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "sph/checksum.hpp"
 #include "sph/error.hpp"
 
 namespace sph::sim {
@@ -89,9 +90,6 @@ class StateReader {
   std::size_t at_ = 0;
 };
 
-// FNV-1a, 64 bits: a checksum (not a defence against tampering). `hash` carries a checksum on
-// over more bytes: fnv1a(b, m, fnv1a(a, n)) is the checksum of a then b.
-constexpr std::uint64_t kFnv1aStart = 14695981039346656037ull;
-std::uint64_t fnv1a(const char* data, std::size_t n, std::uint64_t hash = kFnv1aStart);
+using ::sph::fnv1a;  // sph/checksum.hpp
 
 }  // namespace sph::sim

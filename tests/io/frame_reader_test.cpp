@@ -1,6 +1,6 @@
 // Frames written by writeFrame read back identical in every format; damaged files and run
 // directories give errors that name the file.
-#include "io/frame_reader.hpp"
+#include "sph/io/frame_reader.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/frame_writer.hpp"
+#include "sph/io/frame_writer.hpp"
 #include "sph/error.hpp"
 
 namespace sph::io {

@@ -1,4 +1,4 @@
-#include "io/pvd_series.hpp"
+#include "sph/io/pvd_series.hpp"
 
 #include "io/pvd_reader.hpp"
 #include "sph/error.hpp"

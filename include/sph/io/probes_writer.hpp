@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "io/row_file.hpp"
+#include "sph/io/row_file.hpp"
 #include "sph/stats.hpp"
 
 namespace sph::io {
