@@ -33,18 +33,19 @@ inline void padArrays(std::size_t n, float padding,
   }
 }
 
-inline FloatBatch loadBatch(const float* a, std::uint32_t j) {
+SPH_BATCH_INLINE FloatBatch loadBatch(const float* a, std::uint32_t j) {
   return FloatBatch(a + j, stdx::element_aligned);
 }
 
-inline BatchVec3 loadBatch(const float* x, const float* y, const float* z, std::uint32_t j) {
+SPH_BATCH_INLINE BatchVec3 loadBatch(const float* x, const float* y, const float* z,
+                                     std::uint32_t j) {
   return {loadBatch(x, j), loadBatch(y, j), loadBatch(z, j)};
 }
 
 #if defined(__AVX2__)
 // Rows to columns: rows[k] holds 8 floats of one particle; after, rows[c] holds float c of the
 // 8 particles.
-inline void transpose8(__m256 (&rows)[8]) {
+SPH_BATCH_INLINE void transpose8(__m256 (&rows)[8]) {
   const __m256 t0 = _mm256_unpacklo_ps(rows[0], rows[1]), t1 = _mm256_unpackhi_ps(rows[0], rows[1]);
   const __m256 t2 = _mm256_unpacklo_ps(rows[2], rows[3]), t3 = _mm256_unpackhi_ps(rows[2], rows[3]);
   const __m256 t4 = _mm256_unpacklo_ps(rows[4], rows[5]), t5 = _mm256_unpackhi_ps(rows[4], rows[5]);
@@ -72,8 +73,8 @@ inline void transpose8(__m256 (&rows)[8]) {
 // The 4 floats of each record `at` names from `first` on, as 4 batches: records k and k + 4
 // share a register, one in each half, so that the rows become columns by in-lane shuffles (8
 // of them, against 24 for a whole 8 × 8 transpose).
-inline void transposeHalves(const float* records, const std::uint32_t* at, std::uint32_t first,
-                            __m256 (&columns)[4]) {
+SPH_BATCH_INLINE void transposeHalves(const float* records, const std::uint32_t* at,
+                                      std::uint32_t first, __m256 (&columns)[4]) {
   __m256 rows[4];
   for (int k = 0; k < 4; ++k)
     rows[k] = _mm256_insertf128_ps(
@@ -89,10 +90,13 @@ inline void transposeHalves(const float* records, const std::uint32_t* at, std::
 #endif
 
 // The first `kColumns` floats of each record `at` names, as batches: column c of the records in
-// lane k. A pass that reads only some of a record's floats gathers only those: the shuffles
-// that turn rows into columns bound the solver's passes.
+// lane k. Always inlined, as the other batch helpers are: out of line, a pass's walk calls it
+// for every batch of neighbours, and the force pass ran 1.7 times as long. A pass that reads only
+// some of a record's floats gathers only those: the shuffles that turn rows into columns bound the
+// solver's passes.
 template <std::uint32_t kColumns = 8>
-inline void gatherRecords(const float* records, const std::uint32_t* at, FloatBatch (&columns)[8]) {
+SPH_BATCH_INLINE void gatherRecords(const float* records, const std::uint32_t* at,
+                                    FloatBatch (&columns)[8]) {
   static_assert(kColumns >= 1 && kColumns <= 8, "a record holds 8 floats");
 #if defined(__AVX2__)
   if constexpr (kBatch == 8 && kColumns == 8) {
@@ -120,12 +124,12 @@ inline void gatherRecords(const float* records, const std::uint32_t* at, FloatBa
 }
 
 // 0, 1, 2, ...: lane k of a load at j holds particle j + k.
-inline FloatBatch laneNumbers() {
+SPH_BATCH_INLINE FloatBatch laneNumbers() {
   return FloatBatch([](auto k) { return float(k); });
 }
 
 // Bit k set for lane k of the mask.
-inline unsigned maskBits(const FloatBatch::mask_type& mask) {
+SPH_BATCH_INLINE unsigned maskBits(const FloatBatch::mask_type& mask) {
   FloatBatch sign(0.0f);
   stdx::where(mask, sign) = FloatBatch(-1.0f);
 #if defined(__AVX2__)
@@ -138,7 +142,7 @@ inline unsigned maskBits(const FloatBatch::mask_type& mask) {
 
 // Writes j + k for each lane k set in `bits`, in order, from `out` on; returns how many. May
 // write a whole batch past them: `out` needs room for kBatch more.
-inline std::uint32_t appendLanes(std::uint32_t* out, std::uint32_t j, unsigned bits) {
+SPH_BATCH_INLINE std::uint32_t appendLanes(std::uint32_t* out, std::uint32_t j, unsigned bits) {
 #if defined(__AVX2__)
   if constexpr (kBatch == 8) {
     // For each 8-bit mask the lanes set, packed to the front (AVX2 has no compress).

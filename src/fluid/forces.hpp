@@ -48,36 +48,41 @@ struct ForcePass {
 #endif
     if constexpr (std::is_same_v<S, float>) return constants;
   }
+  // Particle i's state, and what it sums. Its terms (ForceTerms) are made again for each pair
+  // from these plain values, which the compiler keeps in registers through the walk.
   template <class S, class V>
   struct Sum {
-    ForceTerms<S, V, Options, Kernels> terms;
+    PressureState state;
+    Vec3 velocity;
     ForceSums<S, V> sums;
   };
   template <class S, class V>
+  SPH_HD_INLINE ForceTerms<S, V, Options, Kernels> terms(const Sum<S, V>& sum) const {
+    return ForceTerms<S, V, Options, Kernels>(constantsFor<S, V>(), sum.state, sum.velocity);
+  }
+  template <class S, class V>
   SPH_HD_INLINE Sum<S, V> start(std::size_t i) const {
-    return {ForceTerms<S, V, Options, Kernels>(constantsFor<S, V>(), unpackPressureState(state[i]),
-                                               xyz(velocity[i])),
-            ForceSums<S, V>{}};
+    return {unpackPressureState(state[i]), xyz(velocity[i]), ForceSums<S, V>{}};
   }
   template <class S, class V, class M, class C>
   SPH_HD_INLINE void addFluid(Sum<S, V>& sum, const Pair<S, V, M>& pair, const C& columns) const {
     using R = ForceRecord;
-    sum.terms.addFluid(sum.sums, pair, V{columns[R::kVX], columns[R::kVY], columns[R::kVZ]},
-                       columns[R::kPressureTerm], columns[R::kDensity]);
+    terms(sum).addFluid(sum.sums, pair, V{columns[R::kVX], columns[R::kVY], columns[R::kVZ]},
+                        columns[R::kPressureTerm], columns[R::kDensity]);
   }
   template <class S, class V, class M>
   SPH_HD_INLINE void addWall(Sum<S, V>& sum, const Pair<S, V, M>& pair, S volume) const {
-    sum.terms.addWall(sum.sums, pair, volume);
+    terms(sum).addWall(sum.sums, pair, volume);
   }
   template <class S, class V, class M>
   SPH_HD_INLINE void addMovingWall(Sum<S, V>& sum, const Pair<S, V, M>& pair, S volume,
                                    const V& velocityB) const {
-    sum.terms.addObject(sum.sums, pair, volume, velocityB);
+    terms(sum).addObject(sum.sums, pair, volume, velocityB);
   }
   template <class S, class V>
   SPH_HD_INLINE void finish(std::size_t i, const Sum<S, V>& sum) const {
     const Vec3 extra = external ? xyz(external[id[i]]) : Vec3{0.0f, 0.0f, 0.0f};
-    acceleration[i] = makeVec4(sum.terms.total(sum.sums, extra), 0.0f);
+    acceleration[i] = makeVec4(terms(sum).total(sum.sums, extra), 0.0f);
   }
 };
 
