@@ -70,8 +70,6 @@ struct ContinuityPass {
   SPH_HD_INLINE void addWall(ContinuitySum<S, V>& sum, const Pair<S, V, M>& pair, S volume) const {
     sum.rate += densityRateTerm(S(p.restDensity) * volume, sum.vi, pairGradient(kernels, pair));
   }
-  template <class S, class V, class M>
-  SPH_HD_INLINE void addMovingWall(ContinuitySum<S, V>&, const Pair<S, V, M>&, S, const V&) const {}
   template <class S, class V>
   SPH_HD_INLINE void finish(std::size_t i, const ContinuitySum<S, V>& sum) const {
     const float rho = density[i] + dt * sumLanes(sum.rate);

@@ -264,14 +264,15 @@ void searchOneAtATime(FluidParticles<B>& fluid, const Grid<B>& grid,
           if (j != i) ++count;
         });
         neighborCount[i] = count <= stride ? count : kNeighborOverflow;
-        forEachWallNeighbor(walls, xi, [&](std::uint32_t b) {
-          const Vec4 xb = readOnly(wall + b);
-          pass.addWall(sum, lengthSquared(xi - xyz(xb)), true, xb.w);
-        });
-        forEachWallNeighbor(objectCells, xi, [&](std::uint32_t k) {
-          const Vec4 xk = readOnly(object + k);
-          pass.addWall(sum, lengthSquared(xi - xyz(xk)), true, xk.w);
-        });
+        // The walls' particles, then the objects': both are boundary to the density.
+        const auto addBoundary = [&](const WallCells& cells, const Vec4* boundaryPosition) {
+          forEachWallNeighbor(cells, xi, [&](std::uint32_t b) {
+            const Vec4 xb = readOnly(boundaryPosition + b);
+            pass.addWall(sum, lengthSquared(xi - xyz(xb)), true, xb.w);
+          });
+        };
+        addBoundary(walls, wall);
+        addBoundary(objectCells, object);
         pass.finish(i, sum);
       });
 }

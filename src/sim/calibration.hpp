@@ -6,8 +6,8 @@
 #include "objects/object_world.hpp"
 #include "sim/fluid_engine.hpp"
 #include "sim/walls.hpp"
-#include "sph/core/time_step.hpp"
 #include "sph/calibration.hpp"
+#include "sph/core/time_step.hpp"
 
 namespace sph::sim {
 

@@ -3,14 +3,17 @@
 // (Meteer 2011, §7). The divergence solve first makes the velocity field divergence-free; the
 // density solve, after the other forces, gives the pressure that keeps the density at rest at
 // the end of the step.
+#include <cmath>
+
 #include "sim/simulation_impl.hpp"
+#include "sph/core/constants.hpp"
 
 namespace sph {
 
 std::vector<Simulation::Impl::Stage> Simulation::Impl::dfsphStages() const {
   std::vector<Stage> list;
   // Boundary particles are read before the density pass that counts them.
-  if (objectsAsBoundary())
+  if (coupling.asBoundary())
     list.push_back({"objects as boundary", &StepProfile::interaction, &Impl::receiveObjects});
   list.push_back({"build grid", &StepProfile::buildGrid, &Impl::buildGrid});
   list.push_back({"density", &StepProfile::densityPressure, &Impl::sumDensity});
@@ -18,15 +21,15 @@ std::vector<Simulation::Impl::Stage> Simulation::Impl::dfsphStages() const {
   // density solve needs, and the error it reports.
   list.push_back({"divergence solve", &StepProfile::divergenceSolve, &Impl::solveDivergence});
   list.push_back({"non-pressure forces", &StepProfile::forces, &Impl::computeForces});
-  if (objectsAsBoundary())
+  if (coupling.asBoundary())
     list.push_back({"containment", &StepProfile::interaction, &Impl::checkContainment});
-  else if (coupled())
+  else if (coupling.coupled())
     list.push_back({"contacts with objects", &StepProfile::interaction, &Impl::contactObjects});
   list.push_back({"time step", &StepProfile::timeStep, &Impl::chooseTimeStep});
   if (scene.fluid.dfsph.densitySolve)
     list.push_back({"density solve", &StepProfile::densitySolve, &Impl::solveDensity});
   // With boundary coupling, the reactions of the pressure the solves have just given.
-  if (coupled())
+  if (coupling.coupled())
     list.push_back({"forces on objects", &StepProfile::interaction, &Impl::collectObjectForces});
   addStepEnd(list);
   return list;
@@ -34,18 +37,14 @@ std::vector<Simulation::Impl::Stage> Simulation::Impl::dfsphStages() const {
 
 void Simulation::Impl::solveDivergence() {
   engine->prepareSolver();
-  divergenceReport = engine->solve(solverSettings(fluid::SolverTarget::NoDivergence),
-                                   fluid::SolverTarget::NoDivergence, float(dt));
-  solverTotals.divergenceIterations += std::uint64_t(divergenceReport.iterations);
-  if (!scene.fluid.dfsph.divergenceSolve) divergenceReport.converged = true;  // not asked to
-  if (!divergenceReport.converged) ++solverTotals.unconvergedSolves;
+  solves.addDivergence(engine->solve(solverSettings(fluid::SolverTarget::NoDivergence),
+                                     fluid::SolverTarget::NoDivergence, float(clock.dt)),
+                       scene.fluid.dfsph.divergenceSolve);
 }
 
 void Simulation::Impl::solveDensity() {
-  densityReport = engine->solve(solverSettings(fluid::SolverTarget::RestDensity),
-                                fluid::SolverTarget::RestDensity, float(dt));
-  solverTotals.densityIterations += std::uint64_t(densityReport.iterations);
-  if (!densityReport.converged) ++solverTotals.unconvergedSolves;
+  solves.addDensity(engine->solve(solverSettings(fluid::SolverTarget::RestDensity),
+                                  fluid::SolverTarget::RestDensity, float(clock.dt)));
 }
 
 fluid::SolverSettings Simulation::Impl::solverSettings(fluid::SolverTarget target) const {

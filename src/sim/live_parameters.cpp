@@ -53,20 +53,21 @@ void Simulation::setLiveParameters(const LiveParameters& values) {
   next.calibration.speedOfSound =
       soundSpeedForStiffness(next.fluid.eos, values.stiffness, next.fluid.restDensity);
 
-  Calibration calibration = sim::calibrate(next, s.externalExchange != nullptr);
+  Calibration calibration = sim::calibrate(next, s.coupling.externalExchange != nullptr);
   calibration.fluidParticles = s.calibration.fluidParticles;
   calibration.boundaryParticles = s.calibration.boundaryParticles;
   calibration.objectParticles = s.calibration.objectParticles;
   const interaction::InteractionParameters interaction =
-      s.coupled() ? sim::interactionParameters(next, calibration) : s.interactionParams;
-  if (s.objects) {
-    s.objects->wait();
-    s.checkContactReach(s.objects->world(), interaction);
+      s.coupling.coupled() ? sim::interactionParameters(next, calibration) : s.coupling.params;
+  if (s.coupling.objects) {
+    s.coupling.objects->wait();
+    sim::ObjectCoupling::checkContactReach(s.coupling.objects->world(), interaction, s.params.h,
+                                           s.scene.sourcePath);
   }
   s.scene = std::move(next);
   s.calibration = calibration;
   s.params = sim::fluidParameters(s.scene, s.calibration);
-  s.interactionParams = interaction;
+  s.coupling.params = interaction;
   s.engine->setParameters(s.params);
 }
 
@@ -75,9 +76,9 @@ void Simulation::steerObject(const std::string& name, const Vec3d& offset, doubl
   for (std::size_t o = 0; o < s.scene.objects.size(); ++o) {
     if (s.scene.objects[o].name != name || s.scene.objects[o].motion != ObjectMotion::Kinematic)
       continue;
-    s.objects->wait();
-    s.objects->world().steer(o, Vec3{float(offset[0]), float(offset[1]), float(offset[2])},
-                             arriveIn);
+    s.coupling.objects->wait();
+    s.coupling.objects->world().steer(o, Vec3{float(offset[0]), float(offset[1]), float(offset[2])},
+                                      arriveIn);
     return;
   }
   throw InputError(s.scene.sourcePath + ": steerObject: no kinematic object is named '" + name +

@@ -17,16 +17,16 @@ Simulation::~Simulation() = default;
 void Simulation::step(double until) {
   Impl& s = *impl_;
   if (s.scene.objectEngine.type == ObjectEngineKind::Bullet && !s.scene.objects.empty() &&
-      !s.externalExchange)
+      !s.coupling.externalExchange)
     throw std::logic_error(s.scene.sourcePath +
                            ": object_engine.type is \"bullet\": attach its Bullet world before "
                            "stepping (sph::BulletEngine::forScene, sph/bullet_engine.hpp)");
   const backend::ScopedThreadCount passThreads(s.threads);
-  s.until = until;
+  s.clock.until = until;
   s.profile = StepProfile{};
   for (const Impl::Stage& stage : s.stages)
     s.profile.*stage.bucket += detail::timedMs([&] { (s.*stage.run)(); });
-  ++s.steps;
+  ++s.clock.steps;
 }
 
 std::vector<std::string> Simulation::stageNames() const {
@@ -38,10 +38,10 @@ std::vector<std::string> Simulation::stageNames() const {
 void Simulation::attachObjectEngine(std::shared_ptr<ObjectExchange> exchange) {
   Impl& s = *impl_;
   if (!exchange) throw std::invalid_argument("attachObjectEngine: expected an exchange, got null");
-  if (s.objects)
+  if (s.coupling.objects)
     throw std::logic_error("attachObjectEngine: " + s.scene.sourcePath +
                            " has objects of its own, moved by the built-in engine");
-  if (s.externalExchange)
+  if (s.coupling.externalExchange)
     throw std::logic_error("attachObjectEngine: an object engine is attached already");
   // The contact with the attached objects is calibrated as for a scene's own objects.
   Calibration calibration = sim::calibrate(s.scene, /*attachedEngine=*/true);
@@ -49,29 +49,30 @@ void Simulation::attachObjectEngine(std::shared_ptr<ObjectExchange> exchange) {
   calibration.boundaryParticles = s.calibration.boundaryParticles;
   calibration.initialDt = s.calibration.initialDt;
   s.calibration = calibration;
-  s.interactionParams = sim::interactionParameters(s.scene, s.calibration);
-  s.externalExchange = std::move(exchange);
-  s.seenPublication = 0;
+  s.coupling.params = sim::interactionParameters(s.scene, s.calibration);
+  s.coupling.externalExchange = std::move(exchange);
+  s.coupling.seenPublication = 0;
   s.stages = s.stageList();  // now with the objects' stages
 }
 
 void Simulation::containFluid(std::int32_t object, const std::vector<std::uint32_t>& ids) {
   Impl& s = *impl_;
-  if (!s.externalExchange)
+  if (!s.coupling.externalExchange)
     throw std::logic_error("containFluid: attach an object engine first (attachObjectEngine)");
-  if (s.steps != 0) throw std::logic_error("containFluid: call it before the first step");
+  if (s.clock.steps != 0) throw std::logic_error("containFluid: call it before the first step");
   if (object < 0)
     throw std::invalid_argument("containFluid: expected an object id >= 0, got " +
                                 std::to_string(object));
-  const std::size_t n = s.initialFluid;
+  const std::size_t n = s.counts.initialFluid;
   for (std::uint32_t id : ids)
     if (id >= n)
       throw std::invalid_argument("containFluid: " + std::to_string(id) +
                                   " is no fluid particle's id (there are " + std::to_string(n) +
                                   ")");
-  if (s.externalContainers.empty()) s.externalContainers.assign(n, -1);
-  for (std::uint32_t id : ids) s.externalContainers[id] = object;
-  s.engine->setContainers(s.externalContainers);
+  std::vector<std::int32_t>& containers = s.coupling.externalContainers;
+  if (containers.empty()) containers.assign(n, -1);
+  for (std::uint32_t id : ids) containers[id] = object;
+  s.engine->setContainers(containers);
 }
 
 void Simulation::setExternalAcceleration(const std::vector<float>& byId) {
@@ -79,7 +80,7 @@ void Simulation::setExternalAcceleration(const std::vector<float>& byId) {
     impl_->engine->setExternalAcceleration({});
     return;
   }
-  const std::size_t n = impl_->initialFluid;
+  const std::size_t n = impl_->counts.initialFluid;
   if (byId.size() != 3 * n)
     throw std::invalid_argument("setExternalAcceleration: expected 3 × " + std::to_string(n) +
                                 " values (x, y, z per fluid particle), got " +
@@ -91,33 +92,34 @@ void Simulation::setExternalAcceleration(const std::vector<float>& byId) {
 }
 
 void Simulation::advanceTo(double t) {
-  while (impl_->time < t) step(t);
+  while (impl_->clock.time < t) step(t);
 }
 
 double Simulation::time() const {
-  return impl_->time;
+  return impl_->clock.time;
 }
 std::uint64_t Simulation::stepCount() const {
-  return impl_->steps;
+  return impl_->clock.steps;
 }
 double Simulation::lastDt() const {
-  return impl_->dt;
+  return impl_->clock.dt;
 }
 std::uint64_t Simulation::removedCount() const {
-  return impl_->removed;
+  return impl_->counts.removed;
 }
 std::uint64_t Simulation::emittedCount() const {
   std::uint64_t n = 0;
-  for (std::size_t k = 0; k < impl_->emitters.size(); ++k) n += impl_->emitters.emitted(k);
+  const sim::Emitters& emitters = impl_->inflow.emitters;
+  for (std::size_t k = 0; k < emitters.size(); ++k) n += emitters.emitted(k);
   return n;
 }
 std::vector<FlowStats> Simulation::emitterStats() const {
   const Impl& s = *impl_;
+  const sim::Emitters& emitters = s.inflow.emitters;
   std::vector<FlowStats> out;
-  for (std::size_t k = 0; k < s.emitters.size(); ++k) {
-    const std::uint64_t n = s.emitters.emitted(k);
-    out.push_back(
-        {s.emitters.name(k), n, double(n) * s.calibration.mass, s.emitters.particleRate(k)});
+  for (std::size_t k = 0; k < emitters.size(); ++k) {
+    const std::uint64_t n = emitters.emitted(k);
+    out.push_back({emitters.name(k), n, double(n) * s.calibration.mass, emitters.particleRate(k)});
   }
   return out;
 }
@@ -130,7 +132,7 @@ std::vector<FlowStats> Simulation::outletStats() const {
   return out;
 }
 std::uint64_t Simulation::clampedCount() const {
-  return impl_->clamped;
+  return impl_->counts.clamped;
 }
 std::uint64_t Simulation::fluidCount() const {
   return impl_->engine->fluidCount();
@@ -148,19 +150,20 @@ SolverStats Simulation::lastSolve() const {
   const Impl& s = *impl_;
   SolverStats out;
   if (!s.incompressible()) return out;
-  out.densityIterations = s.densityReport.iterations;
-  out.divergenceIterations = s.divergenceReport.iterations;
-  out.densityError = s.densityReport.averageError;
-  out.largestDensityError = s.densityReport.largestError;
-  out.divergenceError = s.divergenceReport.averageError;
-  out.converged = s.densityReport.converged && s.divergenceReport.converged;
+  const sim::SolverRecord& r = s.solves;
+  out.densityIterations = r.density.iterations;
+  out.divergenceIterations = r.divergence.iterations;
+  out.densityError = r.density.averageError;
+  out.largestDensityError = r.density.largestError;
+  out.divergenceError = r.divergence.averageError;
+  out.converged = r.density.converged && r.divergence.converged;
   return out;
 }
 const std::vector<std::string>& Simulation::probeColumns() const {
-  return impl_->probes->columns();
+  return impl_->outputs.probes->columns();
 }
 std::vector<ProbeRow> Simulation::takeProbeRows() {
-  return impl_->probes->take();
+  return impl_->outputs.probes->take();
 }
 const StepProfile& Simulation::lastProfile() const {
   return impl_->profile;

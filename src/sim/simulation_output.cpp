@@ -115,22 +115,22 @@ void appendSolids(FrameBuilder& b, const sim::FluidEngine& engine, const sim::Ob
 std::vector<ObjectStats> Simulation::objectStats() const {
   const Impl& s = *impl_;
   std::vector<ObjectStats> out;
-  if (s.externalExchange) {  // what the fluid knows of an attached engine's objects
-    for (std::size_t o = 0; o < s.fluidForceOnObject.size(); ++o) {
+  if (s.coupling.externalExchange) {  // what the fluid knows of an attached engine's objects
+    for (std::size_t o = 0; o < s.coupling.fluidForceOnObject.size(); ++o) {
       ObjectStats stats;
       // A scene's objects made by Bullet keep their scene names (BulletEngine::forScene).
       const bool named =
           s.scene.objectEngine.type == ObjectEngineKind::Bullet && o < s.scene.objects.size();
       stats.name = named ? s.scene.objects[o].name : "object " + std::to_string(o);
-      const Vec3 f = s.fluidForceOnObject[o];
+      const Vec3 f = s.coupling.fluidForceOnObject[o];
       stats.fluidForce = {f.x, f.y, f.z};
       out.push_back(stats);
     }
     return out;
   }
-  if (!s.objects) return out;
-  s.objects->wait();
-  const objects::ObjectWorld& world = s.objects->world();
+  if (!s.coupling.objects) return out;
+  s.coupling.objects->wait();
+  const objects::ObjectWorld& world = s.coupling.objects->world();
   for (std::size_t o = 0; o < world.objectCount(); ++o) {
     const objects::ObjectInfo info = world.info(o);
     ObjectStats stats;
@@ -138,7 +138,7 @@ std::vector<ObjectStats> Simulation::objectStats() const {
     stats.mass = info.mass;
     stats.centreOfMass = {info.centreOfMass.x, info.centreOfMass.y, info.centreOfMass.z};
     stats.velocity = {info.velocity.x, info.velocity.y, info.velocity.z};
-    const Vec3 f = s.fluidForceOnObject[o];
+    const Vec3 f = s.coupling.fluidForceOnObject[o];
     stats.fluidForce = {f.x, f.y, f.z};
     stats.contactForce = {info.contactForce.x, info.contactForce.y, info.contactForce.z};
     stats.startCentre = {info.startCentre.x, info.startCentre.y, info.startCentre.z};
@@ -152,7 +152,7 @@ std::vector<ObjectStats> Simulation::objectStats() const {
 std::vector<std::uint32_t> Simulation::leakedIds() const {
   const Impl& s = *impl_;
   std::vector<std::uint32_t> out;
-  if (!s.objects && s.externalContainers.empty()) return out;
+  if (!s.coupling.objects && s.coupling.externalContainers.empty()) return out;
   const sim::HostContainment c = s.engine->downloadContainment();
   for (std::size_t k = 0; k < c.containerById.size(); ++k)
     if (c.containerById[k] >= 0 && c.insideById[k] == 0) out.push_back(std::uint32_t(k));
@@ -166,7 +166,7 @@ std::uint64_t Simulation::leakedCount() const {
 std::vector<float> Simulation::leakPositions() const {
   const Impl& s = *impl_;
   std::vector<float> out;
-  if (!s.objects && s.externalContainers.empty()) return out;
+  if (!s.coupling.objects && s.coupling.externalContainers.empty()) return out;
   const sim::HostContainment c = s.engine->downloadContainment();
   for (std::size_t k = 0; k < c.containerById.size(); ++k) {
     const Vec4 x = c.firstExitById[k];
@@ -244,17 +244,17 @@ void FrameCapture::take(ParticleFrame& frame, FrameStats& stats) {
 
 FrameStats Simulation::Impl::statsWithoutParticles(const Simulation& sim) const {
   FrameStats out;
-  out.time = time;
-  out.steps = steps;
-  out.dt = dt;
+  out.time = clock.time;
+  out.steps = clock.steps;
+  out.dt = clock.dt;
   out.boundaryCount = engine->wallCount();
   out.leakedCount = sim.leakedCount();
-  out.removedCount = removed;
+  out.removedCount = counts.removed;
   out.emittedCount = sim.emittedCount();
-  out.contactPairs = contactPairs;
-  out.densityIterations = solverTotals.densityIterations;
-  out.divergenceIterations = solverTotals.divergenceIterations;
-  out.unconvergedSolves = solverTotals.unconvergedSolves;
+  out.contactPairs = coupling.contactPairs;
+  out.densityIterations = solves.densityIterations;
+  out.divergenceIterations = solves.divergenceIterations;
+  out.unconvergedSolves = solves.unconvergedSolves;
   out.objects = sim.objectStats();
   return out;
 }
@@ -274,13 +274,13 @@ FrameCapture Simulation::capture() const {
   s.measureSurfaceIfStale();
   c->fluid = s.engine->beginDownload();
   c->stats = s.statsWithoutParticles(*this);
-  if (s.objects) {
-    s.objects->wait();
-    c->objects = s.objects->world().particles();
+  if (s.coupling.objects) {
+    s.coupling.objects->wait();
+    c->objects = s.coupling.objects->world().particles();
   }
-  c->attached = s.externalSurface;
-  c->initialFluid = s.initialFluid;
-  c->firstObjectId = s.initialFluid + s.engine->wallCount();
+  c->attached = s.coupling.externalSurface;
+  c->initialFluid = s.counts.initialFluid;
+  c->firstObjectId = s.counts.initialFluid + s.engine->wallCount();
   c->restDensity = s.params.restDensity;
   c->surfaceThreshold = s.params.surfaceThreshold;
   c->mass = s.params.mass;
@@ -292,30 +292,30 @@ ParticleFrame Simulation::frame(bool includeBoundary) const {
   s.measureSurfaceIfStale();
   const sim::HostParticles f = s.engine->download();
   FrameBuilder b;
-  b.out.time = s.time;
-  b.out.step = s.steps;
+  b.out.time = s.clock.time;
+  b.out.step = s.clock.steps;
   b.reserve(f.id.size() + (includeBoundary ? s.engine->wallCount() : 0) +
             s.calibration.objectParticles);
-  appendFluid(b, f, s.initialFluid, s.params.surfaceThreshold);
-  appendSolids(b, *s.engine, s.objects.get(), s.externalSurface, s.initialFluid,
-               s.params.restDensity, includeBoundary);
+  appendFluid(b, f, s.counts.initialFluid, s.params.surfaceThreshold);
+  appendSolids(b, *s.engine, s.coupling.objects.get(), s.coupling.externalSurface,
+               s.counts.initialFluid, s.params.restDensity, includeBoundary);
   return std::move(b.out);
 }
 
 FluidView Simulation::fluidView() const {
   FluidView v = impl_->engine->hostView();
-  v.step = impl_->steps;
+  v.step = impl_->clock.steps;
   return v;
 }
 
 ParticleFrame Simulation::solidFrame(bool includeBoundary) const {
   const Impl& s = *impl_;
   FrameBuilder b;
-  b.out.time = s.time;
-  b.out.step = s.steps;
+  b.out.time = s.clock.time;
+  b.out.step = s.clock.steps;
   b.reserve((includeBoundary ? s.engine->wallCount() : 0) + s.calibration.objectParticles);
-  appendSolids(b, *s.engine, s.objects.get(), s.externalSurface, s.initialFluid,
-               s.params.restDensity, includeBoundary);
+  appendSolids(b, *s.engine, s.coupling.objects.get(), s.coupling.externalSurface,
+               s.counts.initialFluid, s.params.restDensity, includeBoundary);
   return std::move(b.out);
 }
 
@@ -340,10 +340,10 @@ std::size_t Simulation::writeFluidForDrawing(const FluidDrawTarget& target) cons
 ParticleFrame Simulation::boundaryFrame() const {
   const Impl& s = *impl_;
   FrameBuilder b;
-  b.out.time = s.time;
-  b.out.step = s.steps;
+  b.out.time = s.clock.time;
+  b.out.step = s.clock.steps;
   b.reserve(s.engine->wallCount());
-  appendWalls(b, s.engine->downloadWalls(), s.initialFluid, s.params.restDensity);
+  appendWalls(b, s.engine->downloadWalls(), s.counts.initialFluid, s.params.restDensity);
   return std::move(b.out);
 }
 

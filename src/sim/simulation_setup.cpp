@@ -1,11 +1,22 @@
 // Setting a simulation up: the scene checked and calibrated, the walls, the objects' engine,
 // the fluid sampled around them, the engine on its backend, the state of frame 0.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "sim/object_clearance.hpp"
+#include "sim/sampling.hpp"
+#include "sim/scene_size.hpp"
 #include "sim/simulation_impl.hpp"
+#include "sph/core/contact.hpp"
+#include "sph/devices.hpp"
 
 namespace sph {
 
 Simulation::Impl::Impl(const Scene& s, const SimulationOptions& options)
-    : scene(scene::validateScene(s)), threads(checkedThreads(options.threads)), emitters(scene) {
+    : scene(scene::validateScene(s)), threads(checkedThreads(options.threads)), inflow(scene) {
   const backend::ScopedThreadCount passThreads(threads);
   backend::requireCompiledInstructionSet();
   sim::refuseIfTooLarge(scene, sim::availableBytes());  // before anything large is made
@@ -16,7 +27,7 @@ Simulation::Impl::Impl(const Scene& s, const SimulationOptions& options)
   setup.walk = options.cpuPasses == CpuPasses::Batched ? fluid::NeighborWalk::Batched
                                                        : fluid::NeighborWalk::OneAtATime;
   params = setup.params;
-  dt = calibration.initialDt;
+  clock.dt = calibration.initialDt;
   std::optional<objects::ObjectWorld> world;
   // Under Bullet the scene's objects are the attached engine's (sph/bullet_engine.hpp).
   if (!scene.objects.empty() && scene.objectEngine.type == ObjectEngineKind::Builtin) {
@@ -27,34 +38,35 @@ Simulation::Impl::Impl(const Scene& s, const SimulationOptions& options)
         setup.walls.begin(), setup.walls.begin() + std::ptrdiff_t(walls.firstParticle().back()));
     settings.staticRadius = static_cast<float>(0.5 * scene.fluid.spacing);
     world.emplace(scene.objects, settings);
-    interactionParams = sim::interactionParameters(scene, calibration);
-    checkContactReach(*world);
+    coupling.params = sim::interactionParameters(scene, calibration);
+    sim::ObjectCoupling::checkContactReach(*world, coupling.params, params.h, scene.sourcePath);
     checkPeriodicExtent(*world);
   }
 
   sampleFluid(setup, walls, world ? &*world : nullptr);
-  initialFluid = setup.positions.size();
+  counts.initialFluid = setup.positions.size();
   engine =
       useCuda(options) ? sim::makeCudaEngine(setup, options.device) : sim::makeCpuEngine(setup);
 
-  calibration.fluidParticles = initialFluid;
+  calibration.fluidParticles = counts.initialFluid;
   calibration.boundaryParticles = engine->wallCount();
   if (world) {
     calibration.objectParticles = world->particles().size();
     engine->setContainers(containers(*world, setup.positions));
-    fluidForceOnObject.assign(world->objectCount(), Vec3{0, 0, 0});
-    contactForceOnObject.assign(world->objectCount(), Vec3{0, 0, 0});
-    objects = std::make_unique<sim::ObjectRunner>(std::move(*world), scene.objectEngine.rate,
-                                                  scene.objectEngine.ownThread);
+    coupling.fluidForceOnObject.assign(world->objectCount(), Vec3{0, 0, 0});
+    coupling.contactForceOnObject.assign(world->objectCount(), Vec3{0, 0, 0});
+    coupling.objects = std::make_unique<sim::ObjectRunner>(
+        std::move(*world), scene.objectEngine.rate, scene.objectEngine.ownThread);
   }
-  if (probesWallForces()) mapWallParticles(walls);
-  inflowZones = emitters.zones();
-  nextId = std::uint32_t(initialFluid + engine->wallCount() + calibration.objectParticles);
+  if (sim::Outputs::probesWallForces(scene))
+    outputs.mapWallParticles(*engine, walls, scene, counts.initialFluid);
+  inflow.nextId =
+      std::uint32_t(counts.initialFluid + engine->wallCount() + calibration.objectParticles);
   // Density and pressure of the initial state, so stats and frame 0 are meaningful.
-  removed += engine->buildGrid();
+  counts.removed += engine->buildGrid();
   engine->computeDensityAndPressure();
   if (params.continuityDensity) engine->keepDensity(setup.densities);
-  probes = std::make_unique<sim::ProbeSampler>(scene, scene.fluid.spacing);
+  outputs.probes = std::make_unique<sim::ProbeSampler>(scene, scene.fluid.spacing);
   sampleProbes();
   stages = stageList();
 }
@@ -69,7 +81,7 @@ void Simulation::Impl::sampleFluid(sim::EngineSetup& setup, const sim::Walls& wa
       const int container = block.inside.empty() ? -1 : int(objectIndex(block.inside));
       sim::removeObjectOverlap(
           points, *world,
-          [&](float radius) { return interaction::contactReach(interactionParams, radius); },
+          [&](float radius) { return interaction::contactReach(coupling.params, radius); },
           container);
     }
     if (block.hydrostatic)
@@ -97,7 +109,7 @@ void Simulation::Impl::keepInside(std::vector<Vec3>& points, const std::string& 
                                   const objects::ObjectWorld* world) const {
   const std::size_t o = objectIndex(name);
   const float margin = interaction::contactReach(
-      interactionParams, world->particles().radius[world->info(o).firstParticle]);
+      coupling.params, world->particles().radius[world->info(o).firstParticle]);
   points.erase(std::remove_if(points.begin(), points.end(),
                               [&](Vec3 p) { return !world->interiorContains(o, p, margin); }),
                points.end());
@@ -148,24 +160,17 @@ void Simulation::Impl::checkPeriodicExtent(const objects::ObjectWorld& world) co
   }
 }
 
-void Simulation::Impl::mapWallParticles(const sim::Walls& walls) {
-  const sim::HostWalls host = engine->downloadWalls();
-  const std::vector<std::size_t>& first = walls.firstParticle();
-  wallOfParticle.resize(host.id.size());
-  for (std::size_t k = 0; k < host.id.size(); ++k) {
-    const std::size_t sampled = host.id[k] - initialFluid;  // wall ids follow the fluid's
-    wallOfParticle[k] =
-        std::size_t(std::upper_bound(first.begin(), first.end(), sampled) - first.begin()) - 1;
-  }
-  fluidForceOnWall.assign(scene.walls.size(), Vec3{0, 0, 0});
-  std::vector<std::uint8_t> probed(scene.walls.size(), 0), watched(host.id.size(), 0);
-  for (const ProbeDesc& p : scene.probes)
-    for (std::size_t w = 0; w < scene.walls.size(); ++w)
-      if (p.kind == ProbeKind::Force && p.wall == scene.walls[w].name) probed[w] = 1;
-  // A periodic image belongs to no wall (its index is past the last): never watched.
-  for (std::size_t k = 0; k < watched.size(); ++k)
-    watched[k] = wallOfParticle[k] < probed.size() ? probed[wallOfParticle[k]] : 0;
-  engine->watchWalls(watched);
+int Simulation::Impl::checkedThreads(int threads) {
+  if (threads < 0 || threads > kMaxThreads)
+    throw std::invalid_argument(
+        "SimulationOptions::threads: expected 0 (the caller's setting) to " +
+        std::to_string(kMaxThreads) + ", got " + std::to_string(threads));
+  return threads;
+}
+
+bool Simulation::Impl::useCuda(const SimulationOptions& options) {
+  if (options.backend == Backend::Cuda) return true;
+  return options.backend == Backend::Auto && !queryGpus().devices.empty();
 }
 
 }  // namespace sph

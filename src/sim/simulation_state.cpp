@@ -19,39 +19,41 @@ using sim::ObjectsState;
 
 void Simulation::saveState(std::ostream& out) const {
   const Impl& s = *impl_;
-  if (s.externalExchange)
+  if (s.coupling.externalExchange)
     throw std::logic_error(
         "saveState: an attached object engine's objects are its own state, not the "
         "simulation's: a saved state could not put them back");
   sim::StateWriter w;
-  sim::fingerprintOf(s.scene, s.initialFluid, s.engine->wallCount(), s.calibration.objectParticles)
+  sim::fingerprintOf(s.scene, s.counts.initialFluid, s.engine->wallCount(),
+                     s.calibration.objectParticles)
       .write(w);
-  Counters{s.time,
-           s.dt,
-           s.movedFor,
-           s.steps,
-           s.removed,
-           s.clamped,
-           s.nextId,
-           s.divergenceReport,
-           s.densityReport,
-           s.solverTotals.densityIterations,
-           s.solverTotals.divergenceIterations,
-           s.solverTotals.unconvergedSolves}
+  Counters{s.clock.time,
+           s.clock.dt,
+           s.clock.movedFor,
+           s.clock.steps,
+           s.counts.removed,
+           s.counts.clamped,
+           s.inflow.nextId,
+           s.solves.divergence,
+           s.solves.density,
+           s.solves.densityIterations,
+           s.solves.divergenceIterations,
+           s.solves.unconvergedSolves}
       .write(w);
   sim::writeLive(w, liveParameters());
-  w.vector(s.fluidForceOnWall);
-  s.emitters.save(w);
-  s.probes->save(w);
+  w.vector(s.outputs.fluidForceOnWall);
+  s.inflow.emitters.save(w);
+  s.outputs.probes->save(w);
   s.measureSurfaceIfStale();  // the flags travel with the state: no neighbours come with it
   sim::writeFluid(w, s.engine->downloadState());
-  w.value(std::uint8_t(s.objects ? 1 : 0));
-  if (s.objects) {
-    s.objects->wait();  // the engine's step handed over at the end of the last fluid step
+  const sim::ObjectCoupling& c = s.coupling;
+  w.value(std::uint8_t(c.objects ? 1 : 0));
+  if (c.objects) {
+    c.objects->wait();  // the engine's step handed over at the end of the last fluid step
     ObjectsState{
-        s.objects->world().state(), s.objects->pacing(),    s.objects->exchange().snapshot(),
-        s.seenPublication,          s.objectMaxSpeed,       s.contactPairs,
-        s.fluidForceOnObject,       s.contactForceOnObject, s.engine->downloadContainment()}
+        c.objects->world().state(), c.objects->pacing(),    c.objects->exchange().snapshot(),
+        c.seenPublication,          c.objectMaxSpeed,       c.contactPairs,
+        c.fluidForceOnObject,       c.contactForceOnObject, s.engine->downloadContainment()}
         .write(w);
   }
   w.finish(out);
@@ -61,9 +63,9 @@ void Simulation::loadState(std::istream& in) {
   Impl& s = *impl_;
   sim::StateReader r(in);  // the whole state read and its checksum checked
   const Fingerprint f = Fingerprint::read(r);
-  if (f.initialFluid != s.initialFluid)
+  if (f.initialFluid != s.counts.initialFluid)
     r.mismatch("it starts with " + std::to_string(f.initialFluid) +
-               " fluid particles, this scene with " + std::to_string(s.initialFluid));
+               " fluid particles, this scene with " + std::to_string(s.counts.initialFluid));
   if (f.walls != s.engine->wallCount())
     r.mismatch("it has " + std::to_string(f.walls) + " wall particles, this scene " +
                std::to_string(s.engine->wallCount()));
@@ -78,23 +80,24 @@ void Simulation::loadState(std::istream& in) {
   const Counters counters = Counters::read(r);
   const LiveParameters live = sim::readLive(r);
   std::vector<Vec3> fluidForceOnWall = r.vector<Vec3>();
-  if (fluidForceOnWall.size() != s.fluidForceOnWall.size()) r.mismatch("its force probes");
-  sim::Emitters emitters = s.emitters;
+  if (fluidForceOnWall.size() != s.outputs.fluidForceOnWall.size()) r.mismatch("its force probes");
+  sim::Emitters emitters = s.inflow.emitters;
   emitters.load(r);
-  sim::ProbeSampler probes = *s.probes;
+  sim::ProbeSampler probes = *s.outputs.probes;
   probes.load(r);
   const sim::HostFluidState fluid = sim::readFluid(r, counters.nextId, s.scene.outlets.size());
   const bool hasObjects = r.value<std::uint8_t>() != 0;
-  if (hasObjects != bool(s.objects)) r.mismatch("its objects");
+  sim::ObjectCoupling& c = s.coupling;
+  if (hasObjects != bool(c.objects)) r.mismatch("its objects");
   ObjectsState objects;
   if (hasObjects)
-    objects = ObjectsState::read(r, s.objects->exchange().handleCount(),
-                                 s.fluidForceOnObject.size(), s.initialFluid);
+    objects = ObjectsState::read(r, c.objects->exchange().handleCount(),
+                                 c.fluidForceOnObject.size(), s.counts.initialFluid);
   r.expectEnd();
   if (hasObjects) {
-    s.objects->wait();
+    c.objects->wait();
     try {  // first: the world checks its own sizes before it changes anything
-      s.objects->world().restore(objects.world);
+      c.objects->world().restore(objects.world);
     } catch (const std::invalid_argument& e) {
       r.mismatch(e.what());
     }
@@ -103,41 +106,41 @@ void Simulation::loadState(std::istream& in) {
   if (!sim::sameLive(live, liveParameters())) setLiveParameters(live);
   const backend::ScopedThreadCount passThreads(s.threads);
   s.engine->uploadState(fluid);
-  s.time = counters.time;
-  s.dt = counters.dt;
-  s.movedFor = counters.movedFor;
-  s.steps = counters.steps;
-  s.removed = counters.removed;
-  s.clamped = counters.clamped;
-  s.nextId = counters.nextId;
-  s.divergenceReport = counters.divergence;
-  s.densityReport = counters.density;
-  s.solverTotals.densityIterations = counters.densityIterations;
-  s.solverTotals.divergenceIterations = counters.divergenceIterations;
-  s.solverTotals.unconvergedSolves = counters.unconvergedSolves;
-  s.neighboursListed = false;  // no density pass has listed these particles' neighbours
-  s.surfaceMeasured = true;    // the flags came with the state
-  s.fluidForceOnWall = std::move(fluidForceOnWall);
-  s.emitters = std::move(emitters);
-  *s.probes = std::move(probes);
+  s.clock.time = counters.time;
+  s.clock.dt = counters.dt;
+  s.clock.movedFor = counters.movedFor;
+  s.clock.steps = counters.steps;
+  s.counts.removed = counters.removed;
+  s.counts.clamped = counters.clamped;
+  s.inflow.nextId = counters.nextId;
+  s.solves.divergence = counters.divergence;
+  s.solves.density = counters.density;
+  s.solves.densityIterations = counters.densityIterations;
+  s.solves.divergenceIterations = counters.divergenceIterations;
+  s.solves.unconvergedSolves = counters.unconvergedSolves;
+  s.outputs.neighboursListed = false;  // no density pass has listed these particles' neighbours
+  s.outputs.surfaceMeasured = true;    // the flags came with the state
+  s.outputs.fluidForceOnWall = std::move(fluidForceOnWall);
+  s.inflow.emitters = std::move(emitters);
+  *s.outputs.probes = std::move(probes);
   if (!hasObjects) return;
-  s.objects->setPacing(objects.pacing);
+  c.objects->setPacing(objects.pacing);
   const std::uint64_t published = objects.exchange.version;
-  s.objects->exchange().restore(std::move(objects.exchange));
+  c.objects->exchange().restore(std::move(objects.exchange));
   s.engine->uploadContainment(objects.containment);
-  s.seenPublication = objects.seenPublication;
+  c.seenPublication = objects.seenPublication;
   // The fluid keeps its own copy of the publication it read last: made again here when that is
   // the newest. A newer one (the engine's step since) is read at the next step, as it would
   // have been, before anything uses the fluid's copy.
   if (published == objects.seenPublication) {
     std::uint64_t older = published - 1;
-    s.objects->exchange().readIfNew(older, [&](const ObjectSurface& surface) {
-      s.engine->setObjectSurface(surface, s.interactionParams);
+    c.objects->exchange().readIfNew(older, [&](const ObjectSurface& surface) {
+      s.engine->setObjectSurface(surface, c.params);
     });
   }
-  s.objectMaxSpeed = objects.objectMaxSpeed;
-  s.contactPairs = objects.contactPairs;
-  s.fluidForceOnObject = std::move(objects.fluidForceOnObject);
-  s.contactForceOnObject = std::move(objects.contactForceOnObject);
+  c.objectMaxSpeed = objects.objectMaxSpeed;
+  c.contactPairs = objects.contactPairs;
+  c.fluidForceOnObject = std::move(objects.fluidForceOnObject);
+  c.contactForceOnObject = std::move(objects.contactForceOnObject);
 }
 }  // namespace sph

@@ -11,9 +11,9 @@
 #include "sim/fluid_engine.hpp"
 #include "sim/object_runner.hpp"
 #include "sim/state_stream.hpp"
+#include "sph/live_parameters.hpp"
 #include "sph/object_exchange.hpp"
 #include "sph/scene.hpp"
-#include "sph/live_parameters.hpp"
 
 namespace sph::sim {
 

@@ -14,10 +14,10 @@ std::vector<Simulation::Impl::Stage> Simulation::Impl::wcsphStages() const {
   if (params.continuityDensity)
     list.push_back({"continuity density", &StepProfile::densityPressure, &Impl::advanceDensity});
   list.push_back({"forces", &StepProfile::forces, &Impl::computeForces});
-  if (coupled())
+  if (coupling.coupled())
     list.push_back({"contacts with objects", &StepProfile::interaction, &Impl::contactObjects});
   list.push_back({"time step", &StepProfile::timeStep, &Impl::chooseTimeStep});
-  if (coupled())
+  if (coupling.coupled())
     list.push_back({"forces on objects", &StepProfile::interaction, &Impl::collectObjectForces});
   addStepEnd(list);
   return list;

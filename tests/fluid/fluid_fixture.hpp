@@ -121,6 +121,28 @@ double bruteForceDensity(const Kernels& kernels, const std::vector<Vec3>& x, std
   return mass * sum;
 }
 
+// Particle i's neighbours within h, itself left out, counted pair by pair in double: `surely`
+// those inside h by more than rounding, `possibly` those not outside it by more; a walk in
+// float must meet a count between the two.
+struct BruteNeighbours {
+  std::uint32_t surely = 0, possibly = 0;
+  double r2 = 0.0;  // Σ r² over those within h
+};
+
+inline BruteNeighbours bruteForceNeighbours(const std::vector<Vec3>& x, std::size_t i, double h) {
+  const double h2 = h * h;
+  BruteNeighbours out;
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    if (j == i) continue;
+    const Vec3 d = x[i] - x[j];
+    const double r2 = double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z;
+    out.surely += r2 < h2 * (1.0 - 1e-5);
+    out.possibly += r2 < h2 * (1.0 + 1e-5);
+    if (r2 < h2) out.r2 += r2;
+  }
+  return out;
+}
+
 // |Σ_i a_i| / Σ_i |a_i| along each axis (equal masses): 0 where every pair pushes both ways.
 struct Imbalance {
   double axis[3] = {0, 0, 0};
