@@ -69,9 +69,12 @@ class Checkpoints : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
-  // The shipped pipe at a coarse spacing: walls, an emitter, an outlet and probes.
+  // The shipped pipe at a coarse spacing: walls, an emitter, an outlet and probes. Under the
+  // sanitizers at 200 frames a second, so that their runs of a few hundredths of a second still
+  // have frames and checkpoints to stop, kill and resume between.
   std::string pipe() const {
-    return std::string(SPH_SOURCE_DIR) + "/scenes/pipe_flow.json --set fluid.spacing=0.01 --fps 50";
+    return std::string(SPH_SOURCE_DIR) + "/scenes/pipe_flow.json --set fluid.spacing=0.01 --fps " +
+           (kSanitized ? "200" : "50");
   }
   void expectSameRun(const fs::path& a, const fs::path& b) const {
     int frames = 0;
@@ -149,8 +152,9 @@ void Checkpoints::killAndResume(const std::string& scene, double every, int fram
 
 // Walls, an emitter, an outlet and probes.
 TEST_F(Checkpoints, AKilledRunResumesToTheSameBytes) {
+  // Under the sanitizers past the emitter's first layer and the outlet's first drained (0.01 s).
   if (kSanitized)
-    killAndResume(pipe() + " --duration 0.3", 0.1, 5, 15);
+    killAndResume(pipe() + " --duration 0.03", 0.01, 2, 6);
   else
     killAndResume(pipe() + " --duration 1.2", 0.1, 5, 60);
 }
@@ -159,15 +163,17 @@ TEST_F(Checkpoints, AKilledRunResumesToTheSameBytes) {
 // its own thread.
 TEST_F(Checkpoints, AKilledRunWithObjectsResumesToTheSameBytes) {
   const std::string artery = std::string(SPH_SOURCE_DIR) + "/scenes/artery_squeeze.json --fps 100";
+  // Under the sanitizers at half the fluid's resolution (a fifteenth of the time a step), past
+  // the clamps' start at 0.05 s.
   if (kSanitized)
-    killAndResume(artery + " --duration 0.04", 0.01, 1, 4);
+    killAndResume(artery + " --set fluid.spacing=0.002 --duration 0.08", 0.01, 1, 8);
   else
     killAndResume(artery + " --duration 0.12", 0.01, 1, 12);
 }
 
 TEST_F(Checkpoints, AFinishedRunExtendsWithALongerDuration) {
   const fs::path whole = dir_ / "whole", extended = dir_ / "extended";
-  const std::string end = kSanitized ? "0.2" : "0.4", half = kSanitized ? "0.1" : "0.2";
+  const std::string end = kSanitized ? "0.02" : "0.4", half = kSanitized ? "0.01" : "0.2";
   ASSERT_EQ(
       runSph("run " + pipe() + " --duration " + end + " --quiet --out " + whole.string()).code, 0);
   ASSERT_EQ(runSph("run " + pipe() + " --duration " + half + " --checkpoint-every " + half +
@@ -207,8 +213,12 @@ TEST_F(Checkpoints, ARunStoppedBetweenFramesExtendsToTheSameBytes) {
 
 TEST_F(Checkpoints, ADamagedCheckpointOrAMisusedResumeExitsTwoSayingWhy) {
   const fs::path run = dir_ / "run";
-  ASSERT_EQ(runSph("run " + pipe() + " --duration 0.1 --checkpoint-every 0.05 --quiet --out " +
-                   run.string())
+  // Under the sanitizers a quarter of the run, resumed to a fifth of the time: the newest
+  // checkpoint is again of frame 5.
+  const std::string duration = kSanitized ? "0.025" : "0.1", every = kSanitized ? "0.01" : "0.05";
+  const std::string longer = kSanitized ? "0.04" : "0.2";
+  ASSERT_EQ(runSph("run " + pipe() + " --duration " + duration + " --checkpoint-every " + every +
+                   " --quiet --out " + run.string())
                 .code,
             0);
   const fs::path newest = run / "checkpoints" / "checkpoint_00005.sphck";
@@ -218,20 +228,21 @@ TEST_F(Checkpoints, ADamagedCheckpointOrAMisusedResumeExitsTwoSayingWhy) {
   std::ofstream(newest, std::ios::binary) << bytes;
   const std::string stats = readFile(run / "stats.csv");
 
-  const Result corrupted = runSph("run --resume " + run.string() + " --duration 0.2");
+  const Result corrupted = runSph("run --resume " + run.string() + " --duration " + longer);
   EXPECT_EQ(corrupted.code, 2) << corrupted.output;
   EXPECT_NE(corrupted.output.find("checkpoint_00005.sphck"), std::string::npos) << corrupted.output;
   EXPECT_NE(corrupted.output.find("checksum"), std::string::npos) << corrupted.output;
   EXPECT_EQ(readFile(run / "stats.csv"), stats) << "a refused resume touches nothing";
 
   std::ofstream(newest, std::ios::binary) << bytes.substr(0, bytes.size() / 3);
-  const Result cut = runSph("run --resume " + run.string() + " --duration 0.2");
+  const Result cut = runSph("run --resume " + run.string() + " --duration " + longer);
   EXPECT_EQ(cut.code, 2) << cut.output;
   EXPECT_NE(cut.output.find("cut short"), std::string::npos) << cut.output;
 
   // Without the damaged one, the run resumes from the one before.
   fs::remove(newest);
-  const Result earlier = runSph("run --resume " + run.string() + " --duration 0.2 --quiet");
+  const Result earlier =
+      runSph("run --resume " + run.string() + " --duration " + longer + " --quiet");
   EXPECT_EQ(earlier.code, 0) << earlier.output;
 
   const Result none = runSph("run --resume " + dir_.string());

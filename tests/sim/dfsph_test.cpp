@@ -79,14 +79,17 @@ double volume(const Simulation& sim) {
 TEST(Dfsph, TheDivergenceSolveAloneKeepsASpinningBoxOfWatersVolume) {
   Simulation sim(spinningBox(true));
   const double start = volume(sim);
-  sim.advanceTo(0.1);
+  // Under the sanitizers the spin-up's first 0.02 s, and the run that fails without the solve.
+  sim.advanceTo(testing::kSanitized ? 0.02 : 0.1);
   const double spunUp = volume(sim);
-  sim.advanceTo(0.5);
-  const double after = volume(sim);
-  std::printf("volume %.6g, %.6g at 0.1 s (%+.2f %%), %.6g at 0.5 s (%+.2f %%)\n", start, spunUp,
-              100.0 * (spunUp / start - 1.0), after, 100.0 * (after / spunUp - 1.0));
   EXPECT_NEAR(spunUp, start, 0.03 * start);
-  EXPECT_NEAR(after, spunUp, 0.01 * spunUp);
+  if (!testing::kSanitized) {
+    sim.advanceTo(0.5);
+    const double after = volume(sim);
+    std::printf("volume %.6g, %.6g at 0.1 s (%+.2f %%), %.6g at 0.5 s (%+.2f %%)\n", start, spunUp,
+                100.0 * (spunUp / start - 1.0), after, 100.0 * (after / spunUp - 1.0));
+    EXPECT_NEAR(after, spunUp, 0.01 * spunUp);
+  }
   Simulation unheld(spinningBox(false));
   EXPECT_THROW(unheld.advanceTo(0.5), SimulationFailure);
 }
