@@ -71,7 +71,9 @@ nlohmann::json timeScene(const std::string& label, const Scene& scene,
   const double interaction = median(samples.interaction);
   const double steps = double(options.steps);
   const double iterations = (samples.densityIterations + samples.divergenceIterations) / steps;
-  const char* solver = scene.fluid.solver == FluidSolver::Dfsph ? "dfsph" : "wcsph";
+  const char* solver = scene.fluid.solver == FluidSolver::Dfsph ? "dfsph"
+                       : scene.fluid.solver == FluidSolver::Pbf ? "pbf"
+                                                                : "wcsph";
   // Simulated seconds per wall second, over the timed steps.
   const double simulatedPerStep = (sim.time() - timedFrom) / steps;
   const double realTime = step > 0 ? simulatedPerStep / (step / 1000.0) : 0.0;
@@ -128,7 +130,9 @@ int benchCommand(const BenchOptions& options) {
       return;
     }
     for (const std::string& solver : options.solvers) {
-      scene.fluid.solver = solver == "dfsph" ? FluidSolver::Dfsph : FluidSolver::Wcsph;
+      scene.fluid.solver = solver == "dfsph" ? FluidSolver::Dfsph
+                           : solver == "pbf" ? FluidSolver::Pbf
+                                             : FluidSolver::Wcsph;
       results.push_back(timeScene(label, scene, where, options));
     }
   };

@@ -131,10 +131,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1.0, 4.0));
   benchCmd
       ->add_option("--solver", bench.solvers,
-                   "Time each size and scene with these solvers, side by side: wcsph, dfsph "
-                   "(default: the scene's own)")
+                   "Time each size and scene with these solvers, side by side: wcsph, dfsph, "
+                   "pbf (default: the scene's own)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"wcsph", "dfsph"}));
+      ->check(CLI::IsMember({"wcsph", "dfsph", "pbf"}));
 
   auto dispatch = [&]() -> int {
     if (*runCmd) {

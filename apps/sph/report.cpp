@@ -57,6 +57,23 @@ void printCalibration(std::FILE* out, const Simulation& sim) {
                  "  first time step      %.6g s (adaptive unless time.fixed_dt: CFL %.3g h/v_max, "
                  "force factor %.3g; c0 sets the artificial viscosity only)\n",
                  c.initialDt, s.time.cfl, d.forceFactor);
+  } else if (s.fluid.solver == FluidSolver::Pbf) {
+    const PbfDesc& d = s.fluid.pbf;
+    std::fprintf(out,
+                 "  solver               position based (pbf): %d iterations a substep, relaxation "
+                 "eps %.6g 1/m^2 (%.3g of a full lattice's)\n",
+                 d.iterations, d.relaxation * c.pbfGradientSquares, d.relaxation);
+    std::fprintf(out, "  substeps             %d a frame step of %.6g s: %.6g s each (%s%s)\n",
+                 c.substeps, s.time.frameDt, c.initialDt,
+                 s.time.fixedDt ? "time.fixed_dt" : origin(c.substepsFromScene),
+                 c.substepsFromScene || s.time.fixedDt
+                     ? ""
+                     : ": no particle moves 0.4 of its radius in one at the expected speed");
+    std::fprintf(out,
+                 "  tensile correction   k %.3g of a full lattice's lambda scale at dq %.3g h; "
+                 "XSPH c %.3g; pressure from the "
+                 "multipliers, -rho0 sum(lambda) / dt^2\n",
+                 d.tensileStrength, d.tensileDistance, d.xsph);
   } else {
     std::fprintf(out, "  solver               weakly compressible (wcsph)\n");
     std::fprintf(out, "  first time step      %.6g s (CFL %.3g; adaptive unless time.fixed_dt)\n",

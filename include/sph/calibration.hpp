@@ -32,6 +32,12 @@ struct Calibration {
   // interaction.coupling: the objects are boundary particles of the fluid's pressure solve
   // (Akinci et al. 2012) rather than contact partners.
   bool objectsAsBoundary = false;
+  // The position solver (fluid.solver "pbf"): substeps a frame step (time.frame_dt); the
+  // constraint gradient's sum on a full lattice, Σ_j |V ∇W_ij|², which scales its relaxation ε
+  // and its tensile correction (core/pbf.hpp), 1/m².
+  int substeps = 0;
+  bool substepsFromScene = false;
+  double pbfGradientSquares = 0.0;
   std::uint64_t fluidParticles = 0;
   std::uint64_t objectParticles = 0;
   std::uint64_t boundaryParticles = 0;

@@ -9,6 +9,7 @@
 #include "fluid/integrate.hpp"
 #include "fluid/integrate_density.hpp"
 #include "fluid/measure_step.hpp"
+#include "fluid/pbf_solve.hpp"
 #include "fluid/prepare_boundary.hpp"
 #include "fluid/sample_points.hpp"
 #include "fluid/wall_forces.hpp"

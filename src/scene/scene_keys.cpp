@@ -89,6 +89,17 @@ const SceneKeys<DfsphDesc>& dfsphKeys() {
   return keys;
 }
 
+const SceneKeys<PbfDesc>& pbfKeys() {
+  static const SceneKeys<PbfDesc> keys{{
+      integer("iterations", at(&PbfDesc::iterations), 1, 1000),
+      number("relaxation", at(&PbfDesc::relaxation), kNonNegative),
+      number("tensile_strength", at(&PbfDesc::tensileStrength), kNonNegative),
+      number("tensile_distance", at(&PbfDesc::tensileDistance), kOpenUnit),
+      number("xsph", at(&PbfDesc::xsph), kClosedUnit),
+  }};
+  return keys;
+}
+
 const SceneKeys<FluidDesc>& viscosityKeys() {
   static const SceneKeys<FluidDesc> keys{{
       choice("model", at(&FluidDesc::viscosityModel), kViscosityNames),
@@ -132,6 +143,7 @@ const SceneKeys<FluidDesc>& fluidKeys() {
       number("support_ratio", at(&FluidDesc::supportRatio), kSupportRatio),
       choice("solver", at(&FluidDesc::solver), kSolverNames),
       section("dfsph", at(&FluidDesc::dfsph), dfsphKeys()),
+      section("pbf", at(&FluidDesc::pbf), pbfKeys()),
       choice("kernel", at(&FluidDesc::kernel), kKernelNames),
       choice("eos", at(&FluidDesc::eos), kEosNames),
       boolean("clamp_negative_pressure", at(&FluidDesc::clampNegativePressure)),
@@ -311,6 +323,8 @@ const SceneKeys<TimeDesc>& timeKeys() {
       number("viscous_factor", at(&TimeDesc::viscousFactor), kUnitStep),
       number("max_dt", at(&TimeDesc::maxDt), kTimeStep),
       optionalNumber("fixed_dt", at(&TimeDesc::fixedDt), kTimeStep),
+      number("frame_dt", at(&TimeDesc::frameDt), kTimeStep),
+      integer("substeps", at(&TimeDesc::substeps), 0, 100000),
   }};
   return keys;
 }

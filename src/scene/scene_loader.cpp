@@ -22,6 +22,12 @@ namespace {
 
 using nlohmann::json;
 
+std::string solverName(FluidSolver solver) {
+  for (const auto& named : kSolverNames)
+    if (named.value == solver) return named.name;
+  return "?";
+}
+
 // Object names are how fluid blocks refer to them: unique, and every reference resolves.
 void checkWallNames(const ReadContext& context, const Scene& scene) {
   for (std::size_t i = 0; i < scene.walls.size(); ++i) {
@@ -116,8 +122,8 @@ void checkDensityModel(const ReadContext& context, const Scene& scene) {
   if (scene.fluid.density != DensityModel::Continuity) return;
   if (scene.fluid.solver != FluidSolver::Wcsph)
     context.fail("fluid.density",
-                 "expected \"summation\" with fluid.solver \"dfsph\" (\"continuity\" needs "
-                 "fluid.solver \"wcsph\"), got \"continuity\"",
+                 "expected \"summation\" with fluid.solver \"" + solverName(scene.fluid.solver) +
+                     "\" (\"continuity\" needs fluid.solver \"wcsph\"), got \"continuity\"",
                  {"fluid.solver"});
   if (scene.fluid.pressureForm != PressureForm::Symmetric)
     context.fail("fluid.density",
@@ -168,8 +174,27 @@ void checkCoupling(const ReadContext& context, const Scene& scene) {
   if (scene.interaction.coupling == ObjectCoupling::Boundary &&
       scene.fluid.solver != FluidSolver::Dfsph)
     context.fail("interaction.coupling",
-                 "expected \"contact\" with fluid.solver \"wcsph\" (\"boundary\" needs "
-                 "fluid.solver \"dfsph\"), got \"boundary\"");
+                 "expected \"contact\" with fluid.solver \"" + solverName(scene.fluid.solver) +
+                     "\" (\"boundary\" needs fluid.solver \"dfsph\"), got \"boundary\"");
+}
+
+// The position solver moves the fluid alone: objects, and the forces on walls its constraints
+// do not compute, need another solver.
+void checkPositionSolver(const ReadContext& context, const Scene& scene) {
+  if (scene.fluid.solver != FluidSolver::Pbf) return;
+  if (!scene.objects.empty())
+    context.fail("objects",
+                 "expected no objects with fluid.solver \"pbf\" (the position solver moves the "
+                 "fluid alone; \"wcsph\" and \"dfsph\" couple objects), got " +
+                     std::to_string(scene.objects.size()),
+                 {"fluid.solver"});
+  for (std::size_t k = 0; k < scene.probes.size(); ++k)
+    if (scene.probes[k].kind == ProbeKind::Force && !scene.probes[k].wall.empty())
+      context.fail("probes[" + std::to_string(k) + "].wall",
+                   "expected no force probe on a wall with fluid.solver \"pbf\" (its "
+                   "constraints give no forces on walls; \"wcsph\" and \"dfsph\" do), got \"" +
+                       scene.probes[k].wall + "\"",
+                   {"fluid.solver"});
 }
 
 void checkWall(const ReadContext& context, const WallDesc& w, const std::string& path,
@@ -220,6 +245,7 @@ void checkAcrossKeys(const ReadContext& context, const Scene& scene) {
   checkObjectNames(context, scene);
   checkWallNames(context, scene);
   checkCoupling(context, scene);
+  checkPositionSolver(context, scene);
   checkPeriodic(context, scene);
   checkDensityModel(context, scene);
   checkProbes(context, scene);

@@ -65,8 +65,8 @@ inline constexpr NamedValue<PressureForm> kPressureFormNames[] = {
     {"paper", PressureForm::Paper}, {"symmetric", PressureForm::Symmetric}};
 inline constexpr NamedValue<DensityModel> kDensityModelNames[] = {
     {"summation", DensityModel::Summation}, {"continuity", DensityModel::Continuity}};
-inline constexpr NamedValue<FluidSolver> kSolverNames[] = {{"wcsph", FluidSolver::Wcsph},
-                                                           {"dfsph", FluidSolver::Dfsph}};
+inline constexpr NamedValue<FluidSolver> kSolverNames[] = {
+    {"wcsph", FluidSolver::Wcsph}, {"dfsph", FluidSolver::Dfsph}, {"pbf", FluidSolver::Pbf}};
 inline constexpr NamedValue<ObjectEngineKind> kObjectEngineNames[] = {
     {"builtin", ObjectEngineKind::Builtin}, {"bullet", ObjectEngineKind::Bullet}};
 inline constexpr NamedValue<ObjectCoupling> kCouplingNames[] = {

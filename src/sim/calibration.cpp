@@ -30,6 +30,21 @@ double latticeSum(const Kernels& kernels, double h, double spacing) {
   return sum;
 }
 
+// Σ_j |∇W(x_i - x_j)|² over an infinite cubic lattice.
+template <class Kernels>
+double gradientSquaresOnLattice(const Kernels& kernels, double h, double spacing) {
+  const int reach = static_cast<int>(std::ceil(h / spacing));
+  double sum = 0.0;
+  for (int k = -reach; k <= reach; ++k)
+    for (int j = -reach; j <= reach; ++j)
+      for (int i = -reach; i <= reach; ++i) {
+        const double r = spacing * std::sqrt(double(i * i + j * j + k * k));
+        const double g = kernels.gradFactor(r) * r;
+        sum += g * g;
+      }
+  return sum;
+}
+
 double gravityMagnitude(const Scene& scene) {
   const auto& g = scene.gravity;
   return std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
@@ -196,6 +211,36 @@ double latticeKernelSum(KernelKind kernel, double h, double spacing) {
   }
 }
 
+double latticeGradientSquares(KernelKind kernel, double h, double spacing) {
+  switch (kernel) {
+    case KernelKind::CubicSpline:
+      return gradientSquaresOnLattice(CubicSplineKernels<double>::make(h), h, spacing);
+    case KernelKind::WendlandC2:
+      return gradientSquaresOnLattice(WendlandC2Kernels<double>::make(h), h, spacing);
+    default:
+      return gradientSquaresOnLattice(MullerKernels<double>::make(h), h, spacing);
+  }
+}
+
+namespace {
+
+// The position solver's substeps and its relaxation ε (core/pbf.hpp).
+void calibratePositions(const Scene& scene, Calibration& out) {
+  const TimeDesc& t = scene.time;
+  out.substepsFromScene = t.substeps > 0;
+  const double travel = kPbfSubstepTravel * out.spacing;
+  out.substeps =
+      t.substeps > 0
+          ? t.substeps
+          : std::max(1, int(std::ceil(t.frameDt * out.maxExpectedSpeed / travel * (1.0 - 1e-12))));
+  // On a full lattice G = 0: the constraint gradient's sum is Σ_j |V ∇W_ij|².
+  const double volume = out.mass / scene.fluid.restDensity;
+  out.pbfGradientSquares =
+      volume * volume * latticeGradientSquares(scene.fluid.kernel, out.supportRadius, out.spacing);
+}
+
+}  // namespace
+
 Calibration calibrate(const Scene& scene, bool attachedEngine) {
   const FluidDesc& f = scene.fluid;
   const CalibrationDesc& c = scene.calibration;
@@ -239,10 +284,13 @@ Calibration calibrate(const Scene& scene, bool attachedEngine) {
 
   if (!scene.objects.empty() || attachedEngine) calibrateContact(scene, out);
 
+  if (f.solver == FluidSolver::Pbf) calibratePositions(scene, out);
+
   // The fluid starts at rest, under gravity alone.
   out.initialDt =
-      scene.time.fixedDt
-          ? *scene.time.fixedDt
+      scene.time.fixedDt ? *scene.time.fixedDt
+      : f.solver == FluidSolver::Pbf
+          ? scene.time.frameDt / out.substeps
           : longestStep(stepLimits(scene, out), 0.0,
                         std::hypot(scene.gravity[0], scene.gravity[1], scene.gravity[2]));
   return out;

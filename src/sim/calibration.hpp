@@ -31,6 +31,13 @@ interaction::InteractionParameters interactionParameters(const Scene& scene,
                                                          const Calibration& calibration);
 objects::WorldSettings worldSettings(const Scene& scene, const Calibration& calibration);
 
+// The position solver's substep: no particle moves more than this many spacings in one (0.4 of
+// its radius) at the largest expected speed.
+constexpr double kPbfSubstepTravel = 0.2;
+
+// Σ_j |∇W(x_i - x_j)|² over an infinite cubic lattice of the given spacing.
+double latticeGradientSquares(KernelKind kernel, double h, double spacing);
+
 // Σ_j W(x_i - x_j) over an infinite cubic lattice of the given spacing, self included.
 double latticeKernelSum(KernelKind kernel, double supportRadius, double spacing);
 

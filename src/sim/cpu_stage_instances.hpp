@@ -43,6 +43,17 @@ extern template SolverReport solve<CpuBackend>(FluidParticles<CpuBackend>&, cons
                                                const FluidParameters&, const SolverSettings&,
                                                SolverTarget, float, NeighborWalk, CoarsePressure&);
 
+// cpu_stages_positions.cpp
+extern template SolverReport solvePositions<CpuBackend>(
+    FluidParticles<CpuBackend>&, const Grid<CpuBackend>&, const BoundaryParticles<CpuBackend>&,
+    const BoundaryParticles<CpuBackend>&, const FluidParameters&, const PbfSettings&, float,
+    const DomainParameters&, NeighborWalk);
+extern template void smoothVelocities<CpuBackend>(FluidParticles<CpuBackend>&,
+                                                  const Grid<CpuBackend>&,
+                                                  const BoundaryParticles<CpuBackend>&,
+                                                  const BoundaryParticles<CpuBackend>&,
+                                                  const FluidParameters&, float, NeighborWalk);
+
 }  // namespace sph::fluid
 
 namespace sph::interaction {

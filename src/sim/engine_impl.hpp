@@ -146,6 +146,13 @@ class EngineImpl final : public FluidEngine {
     return fluid::solve(fluid_, grid_, boundary_, objectBoundary_, params_, settings, target, dt,
                         walk_, coarse_);
   }
+  fluid::SolverReport solvePositions(const fluid::PbfSettings& settings, float dt) override {
+    return fluid::solvePositions(fluid_, grid_, boundary_, objectBoundary_, params_, settings, dt,
+                                 domain_, walk_);
+  }
+  void smoothVelocities(float coefficient) override {
+    fluid::smoothVelocities(fluid_, grid_, boundary_, objectBoundary_, params_, coefficient, walk_);
+  }
   fluid::StepMeasures measureStep() override {
     return fluid::measureStep(fluid_, params_.restDensity);
   }

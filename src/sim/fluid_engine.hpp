@@ -12,6 +12,7 @@
 #include "fluid/drive_inflow.hpp"
 #include "fluid/measure_step.hpp"
 #include "fluid/parameters.hpp"
+#include "fluid/pbf_settings.hpp"
 #include "interaction/object_particles.hpp"
 #include "sph/core/probe.hpp"
 #include "sph/core/vec.hpp"
@@ -87,6 +88,11 @@ class FluidStages {
   virtual void prepareSolver() = 0;
   virtual fluid::SolverReport solve(const fluid::SolverSettings& settings,
                                     fluid::SolverTarget target, float dt) = 0;
+  // The position solver (PBF): after the density pass at the positions integrate predicted,
+  // corrects them over the substep dt and sets the velocity the correction implies; then XSPH
+  // smooths the velocities (fluid/pbf_solve.hpp).
+  virtual fluid::SolverReport solvePositions(const fluid::PbfSettings& settings, float dt) = 0;
+  virtual void smoothVelocities(float coefficient) = 0;
   // Flow in: before integrate, the fluid just past each emitter takes its velocity.
   virtual void driveInflow(const fluid::InflowZones& zones) = 0;
   virtual std::size_t integrate(float dt) = 0;  // returns the particles clamped

@@ -12,12 +12,13 @@ namespace sph::sim {
 struct Inflow {
   explicit Inflow(const Scene& scene) : emitters(scene), zones(emitters.zones()) {}
 
-  // The layers due by time t enter the engine.
-  void emit(FluidEngine& engine, double t) {
+  // The layers due by time t enter the engine; returns how many particles entered.
+  std::size_t emit(FluidEngine& engine, double t) {
     const NewParticles fresh = emitters.emit(t);
-    if (fresh.position.empty()) return;
+    if (fresh.position.empty()) return 0;
     engine.addParticles(fresh.position, fresh.velocity, nextId);
     nextId += std::uint32_t(fresh.position.size());
+    return fresh.position.size();
   }
 
   Emitters emitters;

@@ -62,12 +62,21 @@ struct Simulation::Impl {
   // (sim/wcsph_step.cpp, sim/dfsph_step.cpp). Made again when an object engine is attached.
   std::vector<Stage> stages;
   std::vector<Stage> stageList() const {
-    return scene.fluid.solver == FluidSolver::Dfsph ? dfsphStages() : wcsphStages();
+    switch (scene.fluid.solver) {
+      case FluidSolver::Dfsph:
+        return dfsphStages();
+      case FluidSolver::Pbf:
+        return pbfStages();
+      default:
+        return wcsphStages();
+    }
   }
   std::vector<Stage> wcsphStages() const;
   std::vector<Stage> dfsphStages() const;
-  // The stages after the solver's own, the same for every solver (sim/step_end.cpp).
-  void addStepEnd(std::vector<Stage>& list) const;
+  std::vector<Stage> pbfStages() const;
+  // The stages after the solver's own, the same for every solver (sim/step_end.cpp); `moves`:
+  // the solver has moved the particles itself, and only the clock is left to advance.
+  void addStepEnd(std::vector<Stage>& list, bool moves = false) const;
 
   // The stages (Stage::run): each does the work its name says, and is in a step's list only
   // where the scene gives it work.
@@ -89,9 +98,16 @@ struct Simulation::Impl {
   }
   void integrate() {
     counts.clamped += engine->integrate(float(clock.dt));
+    advanceClock();
+  }
+  void advanceClock() {
     clock.movedFor = clock.dt;
     clock.time = (clock.dt == clock.until - clock.time) ? clock.until : clock.time + clock.dt;
   }
+  // The position solver (sim/pbf_step.cpp).
+  void predictPositions() { counts.clamped += engine->integrate(float(clock.dt)); }
+  void solvePositions();
+  void smoothVelocities() { engine->smoothVelocities(float(scene.fluid.pbf.xsph)); }
   // Meteer 2011, §7, step 2: boundary particles are read before the density pass that counts
   // them; contact partners when the contacts are computed, the engine's step having run beside
   // the fluid's passes until then.
@@ -106,7 +122,11 @@ struct Simulation::Impl {
   void advanceObjects() { coupling.advance(clock.dt); }
   void collectWallForces() { outputs.collectWallForces(*engine); }
   void driveInflow() { engine->driveInflow(inflow.zones); }
-  void emit() { inflow.emit(*engine, clock.time); }
+  // New particles have no neighbour lists until the next density pass: the surface is not
+  // measured from the lists before it.
+  void emit() {
+    if (inflow.emit(*engine, clock.time) != 0) outputs.neighboursListed = false;
+  }
   void sampleProbes() {
     outputs.sampleProbes(*engine, clock.time, coupling.fluidForceOnObject,
                          coupling.contactForceOnObject);
@@ -114,7 +134,8 @@ struct Simulation::Impl {
   void solveDivergence();
   void solveDensity();
   fluid::SolverSettings solverSettings(fluid::SolverTarget target) const;
-  bool incompressible() const { return scene.fluid.solver == FluidSolver::Dfsph; }
+  // A solver that reports its solves (SolverStats): DFSPH's two, PBF's one (as its density solve).
+  bool incompressible() const { return scene.fluid.solver != FluidSolver::Wcsph; }
 
   // Setting up (sim/simulation_setup.cpp).
   Impl(const Scene& s, const SimulationOptions& options);

@@ -66,6 +66,8 @@ Simulation::Impl::Impl(const Scene& s, const SimulationOptions& options)
   counts.removed += engine->buildGrid();
   engine->computeDensityAndPressure();
   if (params.continuityDensity) engine->keepDensity(setup.densities);
+  // The position solver's first substep predicts with the forces (gravity, at least).
+  if (scene.fluid.solver == FluidSolver::Pbf) engine->computeForces();
   outputs.probes = std::make_unique<sim::ProbeSampler>(scene, scene.fluid.spacing);
   sampleProbes();
   stages = stageList();

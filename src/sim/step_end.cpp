@@ -4,12 +4,15 @@
 
 namespace sph {
 
-void Simulation::Impl::addStepEnd(std::vector<Stage>& list) const {
+void Simulation::Impl::addStepEnd(std::vector<Stage>& list, bool moves) const {
   if (!outputs.wallOfParticle.empty())  // a force probe on a wall
     list.push_back({"forces on walls", &StepProfile::wallForces, &Impl::collectWallForces});
   if (!inflow.emitters.empty())
     list.push_back({"drive inflow", &StepProfile::flow, &Impl::driveInflow});
-  list.push_back({"integrate", &StepProfile::integrate, &Impl::integrate});
+  if (moves)
+    list.push_back({"advance clock", &StepProfile::integrate, &Impl::advanceClock});
+  else
+    list.push_back({"integrate", &StepProfile::integrate, &Impl::integrate});
   if (coupling.coupled())
     list.push_back({"object step", &StepProfile::objects, &Impl::advanceObjects});
   if (!inflow.emitters.empty()) list.push_back({"emit", &StepProfile::flow, &Impl::emit});

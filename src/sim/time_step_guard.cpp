@@ -67,13 +67,23 @@ double nextTimeStep(const Scene& scene, const Calibration& calibration, FluidEng
   const bool flows = !scene.emitters.empty() || !scene.outlets.empty();
   if (m.maxSpeed > speedLimit || (engine.fluidCount() == 0 && counts.initialFluid > 0 && !flows))
     failRunaway(scene, engine, clock, counts, m, speedLimit);
-  double next = scene.time.fixedDt ? *scene.time.fixedDt
-                                   : longestStep(stepLimits(scene, calibration), m.maxSpeed,
-                                                 m.maxAcceleration, objectStep);
+  // The position solver's substeps are fixed: its constraints hold at any step, and its
+  // substeps keep each particle's move a fraction of its radius at the expected speeds.
+  double next =
+      scene.time.fixedDt ? *scene.time.fixedDt
+      : scene.fluid.solver == FluidSolver::Pbf
+          ? scene.time.frameDt / calibration.substeps
+          : longestStep(stepLimits(scene, calibration), m.maxSpeed, m.maxAcceleration, objectStep);
   const double remaining = clock.until - clock.time;
   // Under a nanosecond the fluid has blown up: its speeds or accelerations are beyond any
   // scene's, and the run would crawl forever or, once the step no longer moves the clock, hang.
   if (next < kShortestStep && next < remaining) failStalled(clock, next, m);
+  if (scene.fluid.solver == FluidSolver::Pbf && !scene.time.fixedDt && next < remaining) {
+    // Equal substeps up to `until`: the multipliers' pressure, -ρ0 Σλ/Δt², reads what is left
+    // of the last substep's compression over Δt², which a sliver of a step would magnify.
+    const double substeps = std::ceil(remaining / next * (1.0 - 1e-9));
+    return substeps < 1e9 ? remaining / substeps : next;  // an `until` far off: no landing
+  }
   if (next >= remaining)
     next = remaining;
   else if (next > 0.5 * remaining)

@@ -100,6 +100,11 @@ TEST_P(DamBreak, DfsphSurgeFrontFollowsMartinAndMoyce) {
   expectFrontFollowsMartinAndMoyce(GetParam(), FluidSolver::Dfsph);
 }
 
+TEST_P(DamBreak, PbfSurgeFrontFollowsMartinAndMoyce) {
+  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
+  expectFrontFollowsMartinAndMoyce(GetParam(), FluidSolver::Pbf);
+}
+
 SPH_ON_EVERY_BACKEND(DamBreak);
 
 }  // namespace

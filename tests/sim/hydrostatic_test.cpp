@@ -96,6 +96,14 @@ void expectHydrostatic(Backend backend, KernelKind kernel, double tolerance,
     EXPECT_TRUE(solve.converged);
     EXPECT_LE(solve.densityError, scene.fluid.dfsph.densityTolerance);
   }
+  if (solver == FluidSolver::Pbf) {
+    // The constraints at the default iterations: the mean compression within 1 %, the largest
+    // within 5 %.
+    const SolverStats solve = sim.lastSolve();
+    EXPECT_EQ(solve.densityIterations, scene.fluid.pbf.iterations);
+    EXPECT_LE(solve.densityError, 0.01);
+    EXPECT_LE(solve.largestDensityError, 0.05);
+  }
   for (std::size_t i = 0; i < f.size(); ++i) {
     ASSERT_GT(f.position[3 * i + 1], 0.0f) << "particle " << f.id[i] << " below the floor";
     ASSERT_GT(f.position[3 * i], 0.0f) << "particle " << f.id[i] << " inside a wall";
@@ -129,6 +137,13 @@ TEST_P(RestingTank, MullerHoldsHydrostaticPressureWithin20Percent) {
 TEST_P(RestingTank, DfsphCubicSplineHoldsHydrostaticPressureWithin4Percent) {
   SPH_SKIP_UNLESS_AVAILABLE(GetParam());
   expectHydrostatic(GetParam(), KernelKind::CubicSpline, 0.04, FluidSolver::Dfsph);
+}
+
+// The position solver: pressure from the constraints' multipliers, -ρ0 Σλ/Δt² (core/pbf.hpp),
+// not from an equation of state.
+TEST_P(RestingTank, PbfCubicSplineHoldsHydrostaticPressureWithin5Percent) {
+  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
+  expectHydrostatic(GetParam(), KernelKind::CubicSpline, 0.05, FluidSolver::Pbf);
 }
 
 SPH_ON_EVERY_BACKEND(RestingTank);

@@ -56,6 +56,22 @@ TEST(StepStages, TheIncompressibleStepSolvesTwice) {
                                              "non-pressure forces", "time step", "integrate"}));
 }
 
+// Macklin & Müller 2013: the positions predicted, the neighbours found there, the constraints
+// projected; the forces found last are the next substep's.
+TEST(StepStages, ThePositionBasedSubstepProjectsTheConstraints) {
+  const Scene pbf = shipped("dam_break.json", {"fluid.spacing=0.02", "fluid.solver=pbf"});
+  EXPECT_EQ(stagesOf(pbf),
+            (Names{"time step", "predict positions", "build grid", "density", "density constraints",
+                   "XSPH viscosity", "non-pressure forces", "advance clock"}));
+  Scene noXsph = pbf;
+  noXsph.fluid.pbf.xsph = 0.0;
+  EXPECT_EQ(stagesOf(noXsph).size(), 7u);
+  Simulation sim(pbf);
+  sim.step();
+  EXPECT_GT(sim.lastProfile().densitySolve, 0.0);
+  EXPECT_EQ(sim.lastProfile().divergenceSolve, 0.0);
+}
+
 // Meteer 2011, §7: the objects' surface, collisions and contact forces, the forces on the
 // objects, and the engine's own step.
 TEST(StepStages, ObjectsAddTheInteraction) {

@@ -1,0 +1,179 @@
+// Stages of the position solver (Position Based Fluids, core/pbf.hpp), after the density pass
+// at the predicted positions x* (which lists the neighbours for the substep):
+//   solvePositions    Jacobi iterations of two passes, the multipliers and the displacement
+//                     they give, on the positions in the solver's records; then the velocity
+//                     v += (x - x*)/Δt that the corrections imply, the positions, and the
+//                     pressure the multipliers stand for. The density is the last multiplier
+//                     pass's, before its correction.
+//   smoothVelocities  XSPH over the listed neighbours.
+#pragma once
+
+#include <cstdint>
+
+#include "fluid/dfsph_settings.hpp"
+#include "fluid/dfsph_solve.hpp"
+#include "fluid/integrate.hpp"
+#include "fluid/kernel_dispatch.hpp"
+#include "fluid/neighbor_walk.hpp"
+#include "fluid/pbf_passes.hpp"
+#include "fluid/pbf_settings.hpp"
+
+namespace sph::fluid {
+
+namespace detail {
+
+// Both record arrays start at x*, the padding far away.
+template <class B>
+void beginPositionSolve(FluidParticles<B>& fluid) {
+  const std::size_t n = fluid.count;
+  const std::size_t records = kRecordFields * (n + kBatchPadding);
+  fluid.velocityRecords.resize(records);
+  fluid.stiffnessRecords.resize(records);
+  fluid.solverWallGradient.resize(n);
+  fluid.solverTotal.resize(n);
+  fluid.solverError.resize(n);
+  const Vec4* position = fluid.position.data();
+  float* a = fluid.velocityRecords.data();
+  float* b = fluid.stiffnessRecords.data();
+  float* total = fluid.solverTotal.data();
+  B::forEach(
+      n + kBatchPadding, SPH_LAMBDA(std::size_t i) {
+        const Vec3 x = i < n ? xyz(position[i]) : Vec3{1e30f, 1e30f, 1e30f};
+        float* ra = a + kRecordFields * i;
+        float* rb = b + kRecordFields * i;
+        for (std::uint32_t c = 0; c < kRecordFields; ++c) ra[c] = rb[c] = 0.0f;
+        ra[PbfRecord::kX] = rb[PbfRecord::kX] = x.x;
+        ra[PbfRecord::kY] = rb[PbfRecord::kY] = x.y;
+        ra[PbfRecord::kZ] = rb[PbfRecord::kZ] = x.z;
+        if (i < n) total[i] = 0.0f;
+      });
+}
+
+// The corrected positions out of the records: the velocity their move implies, the position
+// wrapped and kept in the domain as integration keeps it, the pressure.
+template <class B>
+void endPositionSolve(FluidParticles<B>& fluid, float dt, float restDensity,
+                      const DomainParameters& domain) {
+  Vec4* position = fluid.position.data();
+  Vec4* velocity = fluid.velocity.data();
+  float* pressure = fluid.pressure.data();
+  const float* records = fluid.velocityRecords.data();
+  const float* total = fluid.solverTotal.data();
+  const DomainParameters d = domain;
+  B::forEach(
+      fluid.count, SPH_LAMBDA(std::size_t i) {
+        const float* r = records + kRecordFields * i;
+        const Vec3 corrected{r[PbfRecord::kX], r[PbfRecord::kY], r[PbfRecord::kZ]};
+        Vec3 v = xyz(velocity[i]) + (corrected - xyz(position[i])) / dt;
+        Vec3 x = wrapIntoDomain(d.periodic, corrected);
+        bool clamped = velocity[i].w != 0.0f;
+        if (d.clampOutside && !d.dampedBox) {
+          clamped = detail::clamp(x.x, v.x, d.min.x, d.max.x) || clamped;
+          clamped = detail::clamp(x.y, v.y, d.min.y, d.max.y) || clamped;
+          clamped = detail::clamp(x.z, v.z, d.min.z, d.max.z) || clamped;
+        }
+        velocity[i] = makeVec4(v, clamped ? 1.0f : 0.0f);
+        position[i] = makeVec4(x);
+        pressure[i] = pbfPressure(total[i], restDensity, dt);
+      });
+}
+
+// The density each multiplier pass found, from its error: what frames and statistics read.
+template <class B>
+void keepSolvedDensity(FluidParticles<B>& fluid, float restDensity) {
+  float* density = fluid.density.data();
+  const std::uint64_t* error = fluid.solverError.data();
+  B::forEach(
+      fluid.count, SPH_LAMBDA(std::size_t i) {
+        // Below ρ0 the error reads 0: the density pass's value stands.
+        if (error[i] != 0)
+          density[i] = restDensity * (1.0f + float(double(error[i]) / kErrorScale));
+      });
+}
+
+}  // namespace detail
+
+// One substep's solve over Δt (see above).
+template <class B>
+SolverReport solvePositions(FluidParticles<B>& fluid, const Grid<B>& grid,
+                            const BoundaryParticles<B>& boundary,
+                            const BoundaryParticles<B>& objects, const FluidParameters& params,
+                            const PbfSettings& settings, float dt, const DomainParameters& domain,
+                            NeighborWalk walk) {
+  SolverReport report;
+  if (fluid.count == 0) return report;
+  detail::beginPositionSolve(fluid);
+  float* a = fluid.velocityRecords.data();   // x, y, z: the positions being corrected
+  float* b = fluid.stiffnessRecords.data();  // x, y, z, λ
+  withKernels(params, [&](auto kernels) {
+    using Kernels = decltype(kernels);
+    const float volume = params.mass / params.restDensity;
+    const float wq = kernels.W(settings.tensileDistance * settings.tensileDistance);
+    const MultiplierPass<Kernels> multipliers{kernels,
+                                              params.mass,
+                                              params.restDensity,
+                                              volume,
+                                              settings.relaxation,
+                                              kernels.W(0.0f),
+                                              a,
+                                              b,
+                                              fluid.solverWallGradient.data(),
+                                              fluid.solverError.data()};
+    const DisplacementPass<Kernels> displace{kernels,
+                                             volume,
+                                             settings.tensileStrength,
+                                             wq > 0.0f ? 1.0f / wq : 0.0f,
+                                             b,
+                                             fluid.solverWallGradient.data(),
+                                             a,
+                                             fluid.solverTotal.data()};
+    for (int k = 0; k < settings.iterations; ++k) {
+      runPass(fluid, grid, boundary, objects, a, kernels, params.periodic, walk, multipliers);
+      runPass(fluid, grid, boundary, objects, b, kernels, params.periodic, walk, displace);
+    }
+  });
+  report.iterations = settings.iterations;
+  report.averageError = settings.iterations > 0 ? detail::averageError(fluid) : 0.0f;
+  report.largestError = settings.iterations > 0 ? detail::largestError(fluid) : 0.0f;
+  report.converged = true;
+  if (settings.iterations > 0) detail::keepSolvedDensity(fluid, params.restDensity);
+  detail::endPositionSolve(fluid, dt, params.restDensity, domain);
+  return report;
+}
+
+// XSPH (core/pbf.hpp) with coefficient c over the listed neighbours.
+template <class B>
+void smoothVelocities(FluidParticles<B>& fluid, const Grid<B>& grid,
+                      const BoundaryParticles<B>& boundary, const BoundaryParticles<B>& objects,
+                      const FluidParameters& params, float coefficient, NeighborWalk walk) {
+  const std::size_t n = fluid.count;
+  if (n == 0 || coefficient == 0.0f) return;
+  fluid.batchRecords.resize(kRecordFields * (n + kBatchPadding));
+  float* records = fluid.batchRecords.data();
+  const Vec4* position = fluid.position.data();
+  const Vec4* velocity = fluid.velocity.data();
+  const float* density = fluid.density.data();
+  // The padding is far away, at rest, with a density to divide by.
+  B::forEach(
+      n + kBatchPadding, SPH_LAMBDA(std::size_t i) {
+        const bool real = i < n;
+        const Vec4 x = real ? position[i] : Vec4{1e30f, 1e30f, 1e30f, 0.0f};
+        const Vec4 v = real ? velocity[i] : Vec4{0.0f, 0.0f, 0.0f, 0.0f};
+        float* r = records + kRecordFields * i;
+        r[PbfRecord::kX] = x.x;
+        r[PbfRecord::kY] = x.y;
+        r[PbfRecord::kZ] = x.z;
+        r[PbfRecord::kVX] = v.x;
+        r[PbfRecord::kVY] = v.y;
+        r[PbfRecord::kVZ] = v.z;
+        r[PbfRecord::kDensity] = real ? density[i] : 1.0f;
+        r[7] = 0.0f;
+      });
+  withKernels(params, [&](auto kernels) {
+    const XsphPass<decltype(kernels)> pass{kernels, coefficient, params.mass, records,
+                                           fluid.velocity.data()};
+    runPass(fluid, grid, boundary, objects, records, kernels, params.periodic, walk, pass);
+  });
+}
+
+}  // namespace sph::fluid

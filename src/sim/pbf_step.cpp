@@ -1,0 +1,35 @@
+// The position-based substep: Position Based Fluids (Macklin & Müller 2013). The velocities
+// take the last substep's non-pressure forces and predict the positions; the neighbours are
+// found once at the predicted positions; a few Jacobi iterations project the density
+// constraints onto the positions; the velocity is what the move implies, smoothed by XSPH.
+// The forces (gravity, viscosity, surface tension, external accelerations) are found last, at
+// the corrected positions, for the next substep. A substep is time.frame_dt / substeps long.
+#include "sim/simulation_impl.hpp"
+
+namespace sph {
+
+std::vector<Simulation::Impl::Stage> Simulation::Impl::pbfStages() const {
+  std::vector<Stage> list;
+  list.push_back({"time step", &StepProfile::timeStep, &Impl::chooseTimeStep});
+  list.push_back({"predict positions", &StepProfile::integrate, &Impl::predictPositions});
+  list.push_back({"build grid", &StepProfile::buildGrid, &Impl::buildGrid});
+  list.push_back({"density", &StepProfile::densityPressure, &Impl::sumDensity});
+  list.push_back({"density constraints", &StepProfile::densitySolve, &Impl::solvePositions});
+  if (scene.fluid.pbf.xsph > 0.0)
+    list.push_back({"XSPH viscosity", &StepProfile::forces, &Impl::smoothVelocities});
+  list.push_back({"non-pressure forces", &StepProfile::forces, &Impl::computeForces});
+  addStepEnd(list, /*moves=*/true);
+  return list;
+}
+
+void Simulation::Impl::solvePositions() {
+  const PbfDesc& d = scene.fluid.pbf;
+  fluid::PbfSettings s;
+  s.iterations = d.iterations;
+  s.relaxation = float(d.relaxation * calibration.pbfGradientSquares);
+  s.tensileStrength = float(d.tensileStrength / calibration.pbfGradientSquares);
+  s.tensileDistance = float(d.tensileDistance * calibration.supportRadius);
+  solves.addDensity(engine->solvePositions(s, float(clock.dt)));
+}
+
+}  // namespace sph
