@@ -133,6 +133,12 @@ int benchCommand(const BenchOptions& options) {
       scene.fluid.solver = solver == "dfsph" ? FluidSolver::Dfsph
                            : solver == "pbf" ? FluidSolver::Pbf
                                              : FluidSolver::Wcsph;
+      // The position solver couples objects only as boundary particles, the weakly
+      // compressible one only by contact.
+      if (!scene.objects.empty() && scene.fluid.solver != FluidSolver::Dfsph)
+        scene.interaction.coupling = scene.fluid.solver == FluidSolver::Pbf
+                                         ? ObjectCoupling::Boundary
+                                         : ObjectCoupling::Contact;
       results.push_back(timeScene(label, scene, where, options));
     }
   };

@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
       ->add_option("--checkpoint-every", run.checkpointEvery,
                    "Save the whole state every T simulated seconds (at the first frame past), and "
                    "at the end, into DIR/checkpoints/ (the last two kept)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 1 << 30));
   runCmd->add_option("--resume", run.resume,
                      "Continue the run in DIR from its newest checkpoint (a longer --duration "
                      "extends it)");
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--height", render.height, "Image height in pixels")
       ->check(CLI::Range(16, 8192));
   renderCmd->add_option("--fps", render.fps, "Video frames per second (default: the run's)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 1 << 30));
   renderCmd->add_flag("--no-video", render.noVideo, "Images only");
   renderCmd->add_flag("--boundary", render.boundary, "Show the walls (DIR/boundary.EXT)");
   renderCmd->add_flag("--grid", render.grid, "Show the domain box and the uniform grid's cells");
@@ -110,7 +110,9 @@ int main(int argc, char** argv) {
   BenchOptions bench;
   auto* benchCmd =
       app.add_subcommand("bench", "Milliseconds per step by stage (Meteer 2011's box drop)");
-  benchCmd->add_option("--sizes", bench.sizes, "Particle counts")->delimiter(',');
+  benchCmd->add_option("--sizes", bench.sizes, "Particle counts")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 1 << 30));
   benchCmd->add_option("--backend", bench.backend, "cpu, cuda or auto")
       ->check(CLI::IsMember({"cpu", "cuda", "auto"}));
   benchCmd->add_option("--threads", bench.threads, "CPU threads, at most 1024 (default: all)")
@@ -118,7 +120,8 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--device", bench.device, "CUDA device index (see sph info)")
       ->check(CLI::NonNegativeNumber);
   benchCmd->add_option("--warmup", bench.warmupSteps, "Steps before timing");
-  benchCmd->add_option("--steps", bench.steps, "Timed steps per size")->check(CLI::PositiveNumber);
+  benchCmd->add_option("--steps", bench.steps, "Timed steps per size")
+      ->check(CLI::Range(1, 1 << 30));
   benchCmd->add_option("--scene", bench.scenes, "Also time this scene file (repeatable)");
   benchCmd->add_option("--set", bench.overrides, "Override a key of the --scene files")->take_all();
   benchCmd->add_option("--json", bench.json,
@@ -132,7 +135,8 @@ int main(int argc, char** argv) {
   benchCmd
       ->add_option("--solver", bench.solvers,
                    "Time each size and scene with these solvers, side by side: wcsph, dfsph, "
-                   "pbf (default: the scene's own)")
+                   "pbf (default: the scene's own; objects couple by contact under wcsph, as "
+                   "boundary particles under pbf)")
       ->delimiter(',')
       ->check(CLI::IsMember({"wcsph", "dfsph", "pbf"}));
 

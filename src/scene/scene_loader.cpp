@@ -168,26 +168,27 @@ void checkPeriodic(const ReadContext& context, const Scene& scene) {
                  {"object_engine.type"});
 }
 
-// Boundary coupling gives the objects the incompressible solver's pressure: there is none
-// without it.
+// Boundary coupling gives the objects the pressure of an incompressible solver, the
+// velocity solver's or the position solver's: the weakly compressible one has none.
 void checkCoupling(const ReadContext& context, const Scene& scene) {
   if (scene.interaction.coupling == ObjectCoupling::Boundary &&
-      scene.fluid.solver != FluidSolver::Dfsph)
+      scene.fluid.solver == FluidSolver::Wcsph)
     context.fail("interaction.coupling",
-                 "expected \"contact\" with fluid.solver \"" + solverName(scene.fluid.solver) +
-                     "\" (\"boundary\" needs fluid.solver \"dfsph\"), got \"boundary\"");
+                 "expected \"contact\" with fluid.solver \"wcsph\" (\"boundary\" needs "
+                 "fluid.solver \"dfsph\" or \"pbf\"), got \"boundary\"");
 }
 
-// The position solver moves the fluid alone: objects, and the forces on walls its constraints
-// do not compute, need another solver.
+// The position solver couples objects only as boundary particles of its density constraints
+// (the contact springs would bound its substep by their stiffness), and gives no forces on
+// walls.
 void checkPositionSolver(const ReadContext& context, const Scene& scene) {
   if (scene.fluid.solver != FluidSolver::Pbf) return;
-  if (!scene.objects.empty())
-    context.fail("objects",
-                 "expected no objects with fluid.solver \"pbf\" (the position solver moves the "
-                 "fluid alone; \"wcsph\" and \"dfsph\" couple objects), got " +
-                     std::to_string(scene.objects.size()),
-                 {"fluid.solver"});
+  if (!scene.objects.empty() && scene.interaction.coupling != ObjectCoupling::Boundary)
+    context.fail("interaction.coupling",
+                 "expected \"boundary\" with objects and fluid.solver \"pbf\" (the position "
+                 "solver's density constraints push the objects' particles as they push the "
+                 "walls'; contact springs would bound its substeps), got \"contact\"",
+                 {"fluid.solver", "objects"});
   for (std::size_t k = 0; k < scene.probes.size(); ++k)
     if (scene.probes[k].kind == ProbeKind::Force && !scene.probes[k].wall.empty())
       context.fail("probes[" + std::to_string(k) + "].wall",

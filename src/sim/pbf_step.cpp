@@ -4,6 +4,9 @@
 // constraints onto the positions; the velocity is what the move implies, smoothed by XSPH.
 // The forces (gravity, viscosity, surface tension, external accelerations) are found last, at
 // the corrected positions, for the next substep. A substep is time.frame_dt / substeps long.
+// Objects are boundary particles of the density constraints, where the last substep's object
+// step left them: the constraints push the fluid off them as off the walls, and the object
+// step takes the opposite of that push (interaction/boundary_forces.hpp) over the substep.
 #include "sim/simulation_impl.hpp"
 
 namespace sph {
@@ -12,12 +15,19 @@ std::vector<Simulation::Impl::Stage> Simulation::Impl::pbfStages() const {
   std::vector<Stage> list;
   list.push_back({"time step", &StepProfile::timeStep, &Impl::chooseTimeStep});
   list.push_back({"predict positions", &StepProfile::integrate, &Impl::predictPositions});
+  // Read after the prediction, which runs while the object step finishes.
+  if (coupling.asBoundary())
+    list.push_back({"objects as boundary", &StepProfile::interaction, &Impl::receiveObjects});
   list.push_back({"build grid", &StepProfile::buildGrid, &Impl::buildGrid});
   list.push_back({"density", &StepProfile::densityPressure, &Impl::sumDensity});
   list.push_back({"density constraints", &StepProfile::densitySolve, &Impl::solvePositions});
   if (scene.fluid.pbf.xsph > 0.0)
     list.push_back({"XSPH viscosity", &StepProfile::forces, &Impl::smoothVelocities});
   list.push_back({"non-pressure forces", &StepProfile::forces, &Impl::computeForces});
+  if (coupling.asBoundary()) {
+    list.push_back({"containment", &StepProfile::interaction, &Impl::checkContainment});
+    list.push_back({"forces on objects", &StepProfile::interaction, &Impl::collectObjectForces});
+  }
   addStepEnd(list, /*moves=*/true);
   return list;
 }

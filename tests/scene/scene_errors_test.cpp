@@ -293,11 +293,12 @@ TEST(SceneErrors, BadPeriodicAxesNameTheKey) {
                   "object_engine.type \"bullet\""});
 }
 
-// Boundary coupling hands the objects the incompressible solver's pressure: none without it.
-TEST(SceneErrors, BoundaryCouplingNeedsTheIncompressibleSolver) {
+// Boundary coupling hands the objects an incompressible solver's pressure: none without it.
+TEST(SceneErrors, BoundaryCouplingNeedsAnIncompressibleSolver) {
   EXPECT_EQ(parseError(with(completeSceneJson(), "/fluid/solver", "wcsph")),
             "scenes/x.json: interaction.coupling: expected \"contact\" with fluid.solver "
-            "\"wcsph\" (\"boundary\" needs fluid.solver \"dfsph\"), got \"boundary\"");
+            "\"wcsph\" (\"boundary\" needs fluid.solver \"dfsph\" or \"pbf\"), got "
+            "\"boundary\"");
 }
 
 // Probes head probes.csv's columns by name, read inside the domain, and a force probe needs an

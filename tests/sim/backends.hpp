@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <string>
 
 #include "sph/devices.hpp"
@@ -18,6 +19,13 @@ inline constexpr bool kSanitized = true;
 #else
 inline constexpr bool kSanitized = false;
 #endif
+
+// Runs too long for the test command (a minute or more) are skipped unless SPH_LONG_TESTS is
+// set: scripts/validate-artery sets it for the ones it names.
+inline bool longRuns() {
+  const char* set = std::getenv("SPH_LONG_TESTS");
+  return set != nullptr && *set != '\0' && *set != '0';
+}
 
 inline std::string backendTestName(const ::testing::TestParamInfo<Backend>& info) {
   return info.param == Backend::Cuda ? "cuda" : "cpu";

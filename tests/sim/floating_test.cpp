@@ -66,11 +66,10 @@ double surfaceLevel(const ParticleFrame& f) {
   return sum / double(top.size()) + 0.5 * kSpacing;
 }
 
-class FloatingBodies : public ::testing::TestWithParam<Backend> {};
-
-TEST_P(FloatingBodies, BoxFloatsAtArchimedesDraftAndBallRestsOnTheFloor) {
-  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
-  Simulation sim(tankWithBodies(), testing::on(GetParam()));
+// `draftTolerance`: of Archimedes' draft.
+void expectBoxAtArchimedesDraftAndBallOnTheFloor(const Scene& scene, Backend backend,
+                                                 double draftTolerance) {
+  Simulation sim(scene, testing::on(backend));
   if (testing::kSanitized) {  // a memory check; the figures are the Release build's
     sim.advanceTo(0.05);
     EXPECT_EQ(sim.removedCount(), 0u);
@@ -98,13 +97,34 @@ TEST_P(FloatingBodies, BoxFloatsAtArchimedesDraftAndBallRestsOnTheFloor) {
   EXPECT_NEAR(box.mass, 500.0 * 8.0 * kBoxHalf[0] * kBoxHalf[1] * kBoxHalf[2], 1e-6);
   std::printf("draft %.4f m, Archimedes %.4f m (%+.1f %%)\n", draft, expected,
               100.0 * (draft / expected - 1.0));
-  // Within 5 % with the box 8 fluid spacings tall (measured +2.6 % on the CPU).
-  EXPECT_NEAR(draft, expected, 0.05 * expected)
+  EXPECT_NEAR(draft, expected, draftTolerance * expected)
       << "draft " << draft << " m, Archimedes " << expected;
   // The ball lies on the floor (y = 0), its centre a radius up, within a fluid spacing, still.
   EXPECT_NEAR(ballHeight, kBallRadius, kSpacing);
   EXPECT_LT(ballSpeed, 0.02);
   EXPECT_EQ(sim.removedCount(), 0u);
+}
+
+class FloatingBodies : public ::testing::TestWithParam<Backend> {};
+
+TEST_P(FloatingBodies, BoxFloatsAtArchimedesDraftAndBallRestsOnTheFloor) {
+  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
+  // Within 5 % with the box 8 fluid spacings tall (measured +2.6 % on the CPU).
+  expectBoxAtArchimedesDraftAndBallOnTheFloor(tankWithBodies(), GetParam(), 0.05);
+}
+
+// The bodies as boundary particles of the position solver's density constraints: what the
+// constraints push the water by, the bodies take back (interaction/boundary_forces.hpp). The
+// box floats high, its draft measured 16 % short on the CPU: a sheet of boundary particles
+// holds the water a spacing off where a wall holds it half a spacing off (docs/solvers.md,
+// "Objects under the position solver"), as under the velocity solver's boundary coupling. Held
+// here to 20 % so that it gets no worse; Archimedes within 5 % needs that offset gone.
+TEST_P(FloatingBodies, UnderThePositionSolverTheBoxFloatsAndTheBallRests) {
+  SPH_SKIP_UNLESS_AVAILABLE(GetParam());
+  Scene scene = tankWithBodies();
+  scene.fluid.solver = FluidSolver::Pbf;
+  scene.interaction.coupling = ObjectCoupling::Boundary;
+  expectBoxAtArchimedesDraftAndBallOnTheFloor(scene, GetParam(), 0.20);
 }
 
 SPH_ON_EVERY_BACKEND(FloatingBodies);

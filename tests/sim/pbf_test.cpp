@@ -58,6 +58,23 @@ TEST(PositionSolver, OneAndTwoThreadsGiveTheSameBytes) {
   EXPECT_GT(moved, 0.0);
 }
 
+// The artery at half its blood's resolution: the vessel and clamps as boundary particles, the
+// object engine stepped every substep.
+ParticleFrame squeezeCoarse(int threads) {
+  backend::setThreadCount(threads);
+  Scene scene = shipped("artery_squeeze.json", {"fluid.spacing=0.002", "fluid.solver=pbf",
+                                                "interaction.coupling=boundary"});
+  Simulation sim(scene);
+  sim.advanceTo(0.1);
+  backend::setThreadCount(0);
+  return sim.frame();
+}
+
+TEST(PositionSolver, WithObjectsOneAndTwoThreadsGiveTheSameBytes) {
+  const ParticleFrame one = squeezeCoarse(1), two = squeezeCoarse(2);
+  testing::expectIdenticalFrames(one, two);
+}
+
 // The loader's message for a shipped scene with `overrides`, or a scene built in code.
 std::string refusal(const std::string& name, std::vector<std::string> overrides) {
   try {
@@ -76,11 +93,14 @@ std::string refusal(const Scene& scene) {
   return "";
 }
 
-TEST(PositionSolver, RefusesObjectsAndWallForceProbesByKey) {
+TEST(PositionSolver, RefusesContactCouplingAndWallForceProbesByKey) {
   const std::string objects = refusal("floating_bodies.json", {"fluid.solver=pbf"});
-  EXPECT_NE(objects.find("objects: expected no objects with fluid.solver \"pbf\""),
+  EXPECT_NE(objects.find("interaction.coupling: expected \"boundary\" with objects and "
+                         "fluid.solver \"pbf\""),
             std::string::npos)
       << objects;
+  EXPECT_EQ(refusal("floating_bodies.json", {"fluid.solver=pbf", "interaction.coupling=boundary"}),
+            "");
   Scene probe = testing::restingTank(0.02, 0.1, 0.1);
   probe.fluid.solver = FluidSolver::Pbf;
   probe.walls[0].name = "tank";
