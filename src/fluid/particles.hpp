@@ -67,6 +67,10 @@ struct FluidParticles {
   Buffer<std::uint64_t> solverError;  // the last iteration's e_i, fixed point (kErrorScale)
   Buffer<float> solverSignedError;    // the same, signed: < 0 where the fluid would expand
   Buffer<float> coarseStiffness;      // the coarse level's K (coarse_correction.hpp)
+  // The position solver (pbf_solve.hpp), per object boundary particle: xyz, Σ over the
+  // substep's iterations of what the density constraints moved the fluid by through it, times
+  // the fluid's mass (kg m); its reaction is the opposite over Δt².
+  Buffer<Vec4> objectPush;
   // ∇W_ij = g_ij (x_i - x_j) of each listed neighbour (n × neighborStride, beside neighbors),
   // kept by the step's first solver pass for the others (neighbor_walk.hpp)
   Buffer<float> pairGradient;

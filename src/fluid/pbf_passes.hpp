@@ -17,8 +17,8 @@ namespace sph::fluid {
 // The fields of the position solver's 8-float records.
 struct PbfRecord {
   enum Field { kX, kY, kZ, kLambda };
-  // xsphRecords
-  enum VelocityField { kVX = 3, kVY, kVZ, kDensity };
+  // XSPH's records
+  enum VelocityField { kVX = 3, kVY, kVZ };
 };
 
 template <class S, class V>
@@ -155,9 +155,9 @@ struct XsphPass {
   static constexpr bool kSkipsCoincident = false;
   static constexpr bool kWalls = false;
   static constexpr bool kObjects = false;
-  static constexpr std::uint32_t kColumns = 7;  // x, y, z, v, ρ
+  static constexpr std::uint32_t kColumns = 6;  // x, y, z, v
   Kernels kernels;
-  float coefficient, mass;
+  float coefficient, volume;
   const float* records;
   Vec4* velocity;
 
@@ -173,8 +173,7 @@ struct XsphPass {
   SPH_HD_INLINE void addFluid(XsphSum<S, V>& sum, const Pair<S, V, M>& pair,
                               const C& columns) const {
     const V vj{columns[PbfRecord::kVX], columns[PbfRecord::kVY], columns[PbfRecord::kVZ]};
-    sum.dv += xsphTerm(S(coefficient), S(mass), columns[PbfRecord::kDensity], vj - sum.vi,
-                       pair.where(kernels.W(pair.r2)));
+    sum.dv += xsphTerm(S(coefficient), S(volume), vj - sum.vi, pair.where(kernels.W(pair.r2)));
   }
   template <class S, class V>
   SPH_HD_INLINE void finish(std::size_t i, const XsphSum<S, V>& sum) const {

@@ -78,6 +78,40 @@ void endPositionSolve(FluidParticles<B>& fluid, float dt, float restDensity,
       });
 }
 
+// What the last multiplier pass's λ (in `multipliers`, x, y, z, λ at that iteration's
+// positions) moves the fluid by through each object particle k, gathered from k's side and
+// added to objectPush: the fluid's share 2 λ_i ψ_k ∇W_ik (core/pbf.hpp) over the same pairs,
+// evaluated as the multiplier pass evaluates them, so that the object takes the exact
+// opposite of what the fluid got (to rounding in the sums' order). The fluid's grid lists the
+// particles at x*; the iterations move them by a small part of h, searched for within 1.5 h.
+// A named template, not a generic lambda: nvcc's device lambdas may not sit inside one.
+template <class B, class Kernels>
+void gatherObjectPush(FluidParticles<B>& fluid, const Grid<B>& grid,
+                      const BoundaryParticles<B>& objects, const FluidParameters& params,
+                      const float* multipliers, Kernels kernels) {
+  const GridSpec spec = grid.spec;
+  const std::uint32_t* cellStart = grid.cellStart.data();
+  const Vec4* object = objects.position.data();  // w: ψ_k
+  Vec4* push = fluid.objectPush.data();
+  const float h2 = params.h * params.h, reach = 1.5f * params.h, mass = params.mass;
+  B::forEach(
+      objects.count, SPH_LAMBDA(std::size_t k) {
+        const Vec4 xk = object[k];
+        Vec3 sum{0.0f, 0.0f, 0.0f};
+        forEachNeighborWithin(spec, cellStart, xyz(xk), reach, [&](std::uint32_t i) {
+          const float* r = multipliers + kRecordFields * i;
+          const Vec3 rik = Vec3{readOnly(r + PbfRecord::kX), readOnly(r + PbfRecord::kY),
+                                readOnly(r + PbfRecord::kZ)} -
+                           xyz(xk);
+          const float r2 = lengthSquared(rik);
+          if (r2 >= h2 || r2 <= 0.0f) return;
+          const Vec3 g = pairGradient(kernels, makePair(rik, r2, true, h2)) * xk.w;
+          sum += pbfWallDisplacement(readOnly(r + PbfRecord::kLambda), g);
+        });
+        push[k] = makeVec4(xyz(push[k]) + sum * mass);
+      });
+}
+
 // The density each multiplier pass found, from its error: what frames and statistics read.
 template <class B>
 void keepSolvedDensity(FluidParticles<B>& fluid, float restDensity) {
@@ -101,6 +135,13 @@ SolverReport solvePositions(FluidParticles<B>& fluid, const Grid<B>& grid,
                             const PbfSettings& settings, float dt, const DomainParameters& domain,
                             NeighborWalk walk) {
   SolverReport report;
+  fluid.objectPush.resize(objects.count);
+  const std::size_t objectCount = objects.count;
+  Vec4* push = fluid.objectPush.data();
+  B::forEach(
+      objectCount, SPH_LAMBDA(std::size_t k) {
+        push[k] = Vec4{0.0f, 0.0f, 0.0f, 0.0f};
+      });
   if (fluid.count == 0) return report;
   detail::beginPositionSolve(fluid);
   float* a = fluid.velocityRecords.data();   // x, y, z: the positions being corrected
@@ -129,6 +170,7 @@ SolverReport solvePositions(FluidParticles<B>& fluid, const Grid<B>& grid,
                                              fluid.solverTotal.data()};
     for (int k = 0; k < settings.iterations; ++k) {
       runPass(fluid, grid, boundary, objects, a, kernels, params.periodic, walk, multipliers);
+      if (objects.count > 0) detail::gatherObjectPush(fluid, grid, objects, params, b, kernels);
       runPass(fluid, grid, boundary, objects, b, kernels, params.periodic, walk, displace);
     }
   });
@@ -152,8 +194,7 @@ void smoothVelocities(FluidParticles<B>& fluid, const Grid<B>& grid,
   float* records = fluid.batchRecords.data();
   const Vec4* position = fluid.position.data();
   const Vec4* velocity = fluid.velocity.data();
-  const float* density = fluid.density.data();
-  // The padding is far away, at rest, with a density to divide by.
+  // The padding is far away, at rest.
   B::forEach(
       n + kBatchPadding, SPH_LAMBDA(std::size_t i) {
         const bool real = i < n;
@@ -166,12 +207,11 @@ void smoothVelocities(FluidParticles<B>& fluid, const Grid<B>& grid,
         r[PbfRecord::kVX] = v.x;
         r[PbfRecord::kVY] = v.y;
         r[PbfRecord::kVZ] = v.z;
-        r[PbfRecord::kDensity] = real ? density[i] : 1.0f;
-        r[7] = 0.0f;
+        r[6] = r[7] = 0.0f;
       });
   withKernels(params, [&](auto kernels) {
-    const XsphPass<decltype(kernels)> pass{kernels, coefficient, params.mass, records,
-                                           fluid.velocity.data()};
+    const XsphPass<decltype(kernels)> pass{kernels, coefficient, params.mass / params.restDensity,
+                                           records, fluid.velocity.data()};
     runPass(fluid, grid, boundary, objects, records, kernels, params.periodic, walk, pass);
   });
 }

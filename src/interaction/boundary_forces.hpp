@@ -8,6 +8,12 @@
 // ObjectParticles), the same for any thread count. And the viscous force the force pass gave
 // the fluid through it (fluid::ForceTerms::addObject), likewise negated. Adds to objects.force
 // (xyz; w: fluid particles in reach).
+//
+// Under the position solver the fluid is moved, not accelerated, off the object particles:
+// the solve gathers, iteration by iteration, m Σ Δx_ik of what its constraints moved the fluid
+// by through each one (fluid::FluidParticles::objectPush), and the object particle takes
+// F_k = -objectPush_k / Δt² over the substep (addConstraintReactions), with the viscous
+// force as above and no pressure term.
 #pragma once
 
 #include "fluid/kernel_dispatch.hpp"
@@ -25,7 +31,7 @@ namespace detail {
 
 // Both forces in one walk over each boundary particle's fluid neighbours. A named template, not
 // a generic lambda: nvcc's device lambdas may not sit inside one.
-template <bool kArtificial, class B, class Kernels>
+template <bool kArtificial, bool kPressure, class B, class Kernels>
 void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::Grid<B>& grid,
                            const fluid::BoundaryParticles<B>& boundary, ObjectParticles<B>& objects,
                            const fluid::FluidParameters& params, Kernels kernels) {
@@ -50,15 +56,21 @@ void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::G
         const float volumeMass = restDensity * xk.w;  // ρ0 ψ_k
         Vec3 sum{0.0f, 0.0f, 0.0f};                   // Σ_i of a_ik, the fluid's acceleration
         float near = 0.0f;
+        // Named here, not first inside `if constexpr`: nvcc's device lambdas may not capture
+        // there.
+        (void)pressure;
+        (void)density;
         fluid::forEachNeighbor(spec, cellStart, xyz(xk), [&](std::uint32_t i) {
           const Vec3 rik = xyz(readOnly(position + i)) - xyz(xk);
           const float r2 = lengthSquared(rik);
           if (r2 >= h2 || r2 <= 0.0f) return;
           const auto pair = fluid::makePair(rik, r2, true, h2);
           const Vec3 gradW = pair.rij * pair.where(kernels.gradFactor(pair.r));
-          const float ki =
-              pressureOverDensitySquared(readOnly(pressure + i), readOnly(density + i));
-          sum += pressureAccelerationSymmetric(volumeMass, ki, ki, gradW);
+          if constexpr (kPressure) {
+            const float ki =
+                pressureOverDensitySquared(readOnly(pressure + i), readOnly(density + i));
+            sum += pressureAccelerationSymmetric(volumeMass, ki, ki, gradW);
+          }
           const float densityI = fluid::unpackPressureState(readOnly(state + i)).density;
           sum += fluid::boundaryFriction<kArtificial>(
               constants, densityI, volumeMass, xyz(readOnly(velocity + i)) - vk, pair, gradW);
@@ -71,18 +83,41 @@ void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::G
 
 }  // namespace detail
 
+// `pressure`: false under the position solver, whose push addConstraintReactions adds.
 template <class B>
 void addBoundaryForces(const fluid::FluidParticles<B>& fluid, const fluid::Grid<B>& grid,
                        const fluid::BoundaryParticles<B>& boundary, ObjectParticles<B>& objects,
-                       const fluid::FluidParameters& params) {
+                       const fluid::FluidParameters& params, bool pressure = true) {
   if (boundary.count == 0 || fluid.count == 0) return;
   const bool artificial = params.viscosityModel == ViscosityModel::Artificial;
   fluid::withKernels(params, [&](auto kernels) {
-    if (artificial)
-      detail::addBoundaryForcesWith<true>(fluid, grid, boundary, objects, params, kernels);
+    if (artificial && pressure)
+      detail::addBoundaryForcesWith<true, true>(fluid, grid, boundary, objects, params, kernels);
+    else if (artificial)
+      detail::addBoundaryForcesWith<true, false>(fluid, grid, boundary, objects, params, kernels);
+    else if (pressure)
+      detail::addBoundaryForcesWith<false, true>(fluid, grid, boundary, objects, params, kernels);
     else
-      detail::addBoundaryForcesWith<false>(fluid, grid, boundary, objects, params, kernels);
+      detail::addBoundaryForcesWith<false, false>(fluid, grid, boundary, objects, params, kernels);
   });
+}
+
+// Under the position solver, after its solve over the substep dt: -objectPush_k / dt² on each
+// object particle (see above).
+template <class B>
+void addConstraintReactions(const fluid::FluidParticles<B>& fluid,
+                            const fluid::BoundaryParticles<B>& boundary,
+                            ObjectParticles<B>& objects, float dt) {
+  if (boundary.count == 0 || fluid.objectPush.size() != boundary.count) return;
+  const Vec4* push = fluid.objectPush.data();
+  const std::uint32_t* twin = boundary.id.data();
+  Vec4* force = objects.force.data();
+  const float scale = 1.0f / (dt * dt);
+  B::forEach(
+      boundary.count, SPH_LAMBDA(std::size_t k) {
+        const Vec4 f = force[twin[k]];
+        force[twin[k]] = makeVec4(xyz(f) - xyz(push[k]) * scale, f.w);
+      });
 }
 
 }  // namespace sph::interaction

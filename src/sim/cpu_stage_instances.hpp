@@ -70,6 +70,9 @@ extern template void addBoundaryForces<CpuBackend>(const fluid::FluidParticles<C
                                                    const fluid::Grid<CpuBackend>&,
                                                    const fluid::BoundaryParticles<CpuBackend>&,
                                                    ObjectParticles<CpuBackend>&,
-                                                   const fluid::FluidParameters&);
+                                                   const fluid::FluidParameters&, bool);
+extern template void addConstraintReactions<CpuBackend>(const fluid::FluidParticles<CpuBackend>&,
+                                                        const fluid::BoundaryParticles<CpuBackend>&,
+                                                        ObjectParticles<CpuBackend>&, float);
 
 }  // namespace sph::interaction

@@ -12,6 +12,9 @@ template void addBoundaryForces<CpuBackend>(const fluid::FluidParticles<CpuBacke
                                             const fluid::Grid<CpuBackend>&,
                                             const fluid::BoundaryParticles<CpuBackend>&,
                                             ObjectParticles<CpuBackend>&,
-                                            const fluid::FluidParameters&);
+                                            const fluid::FluidParameters&, bool);
+template void addConstraintReactions<CpuBackend>(const fluid::FluidParticles<CpuBackend>&,
+                                                 const fluid::BoundaryParticles<CpuBackend>&,
+                                                 ObjectParticles<CpuBackend>&, float);
 
 }  // namespace sph::interaction

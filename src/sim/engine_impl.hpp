@@ -167,6 +167,11 @@ class EngineImpl final : public FluidEngine {
   void addBoundaryForces() override {
     interaction::addBoundaryForces(fluid_, grid_, objectBoundary_, objects_, params_);
   }
+  void addConstraintReactions(float dt) override {
+    interaction::addConstraintReactions(fluid_, objectBoundary_, objects_, dt);
+    interaction::addBoundaryForces(fluid_, grid_, objectBoundary_, objects_, params_,
+                                   /*pressure=*/false);
+  }
   std::size_t computeContacts(const interaction::InteractionParameters& params) override {
     return interaction::computeContacts(fluid_, grid_, objects_, containment_, params);
   }

@@ -128,6 +128,9 @@ class FluidObjectSide {
   // With boundary coupling, after the density solve: the pressure's reactions on the objects'
   // particles, added to the forces downloadObjectForces gives.
   virtual void addBoundaryForces() = 0;
+  // The same under the position solver, after its solve over the substep dt: the reactions of
+  // the density constraints' push, and of the viscous force.
+  virtual void addConstraintReactions(float dt) = 0;
   virtual HostObjectForces downloadObjectForces() const = 0;
   // Which object holds each fluid particle (-1: none), by id; all start inside.
   virtual void setContainers(const std::vector<std::int32_t>& byId) = 0;

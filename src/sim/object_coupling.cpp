@@ -51,8 +51,11 @@ void ObjectCoupling::checkExternalSurface(const ObjectSurface& surface, float h)
     fluidForceOnObject.resize(std::size_t(objectCount), Vec3{0, 0, 0});
 }
 
-void ObjectCoupling::collectForces(FluidEngine& engine) {
-  if (asBoundary()) engine.addBoundaryForces();
+void ObjectCoupling::collectForces(FluidEngine& engine, double dt) {
+  if (asBoundary() && constraintReactions)
+    engine.addConstraintReactions(float(dt));
+  else if (asBoundary())
+    engine.addBoundaryForces();
   objectForces = engine.downloadObjectForces();
   if (asBoundary()) {  // the pairs within h that pushed
     contactPairs = 0;

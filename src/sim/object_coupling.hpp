@@ -30,6 +30,10 @@ struct ObjectCoupling {
   std::vector<Vec3> fluidForceOnObject;    // by object, last step
   std::vector<Vec3> contactForceOnObject;  // by object, over the engine's last finished step
 
+  // Under the position solver the reactions are of its density constraints' push, not of a
+  // pressure (interaction/boundary_forces.hpp).
+  bool constraintReactions = false;
+
   bool coupled() const { return objects || externalExchange; }
   ObjectExchange& exchange() { return objects ? objects->exchange() : *externalExchange; }
   // Akinci et al. 2012's boundary particles in the fluid's pressure, rather than contacts.
@@ -46,8 +50,9 @@ struct ObjectCoupling {
   // whether each fluid particle is still inside its container).
   void computeContacts(FluidEngine& engine) { contactPairs = engine.computeContacts(params); }
   // The fluid's forces on the objects' particles: the contact forces, or with boundary
-  // coupling the reactions of the pressure the solves have just given.
-  void collectForces(FluidEngine& engine);
+  // coupling the reactions of the pressure the solves have just given, or of the push the
+  // position solver's constraints gave over the step dt.
+  void collectForces(FluidEngine& engine, double dt);
   // The engine receives this step's forces and takes its own step(s) over dt.
   void advance(double dt);
 

@@ -118,7 +118,7 @@ struct Simulation::Impl {
     coupling.computeContacts(*engine);
   }
   void checkContainment() { coupling.computeContacts(*engine); }
-  void collectObjectForces() { coupling.collectForces(*engine); }
+  void collectObjectForces() { coupling.collectForces(*engine, clock.dt); }
   void advanceObjects() { coupling.advance(clock.dt); }
   void collectWallForces() { outputs.collectWallForces(*engine); }
   void driveInflow() { engine->driveInflow(inflow.zones); }

@@ -29,6 +29,7 @@ Simulation::Impl::Impl(const Scene& s, const SimulationOptions& options)
   params = setup.params;
   clock.dt = calibration.initialDt;
   std::optional<objects::ObjectWorld> world;
+  coupling.constraintReactions = scene.fluid.solver == FluidSolver::Pbf;
   // Under Bullet the scene's objects are the attached engine's (sph/bullet_engine.hpp).
   if (!scene.objects.empty() && scene.objectEngine.type == ObjectEngineKind::Builtin) {
     objects::WorldSettings settings = sim::worldSettings(scene, calibration);

@@ -65,9 +65,13 @@ TEST(Pbf, TheMultipliersOfAColumnAtRestStandForItsWeight) {
 
 TEST(Pbf, XsphMovesAVelocityTowardsItsNeighbours) {
   const Vec3 vji{1.0f, 0.0f, 0.0f};
-  const Vec3 dv = xsphTerm(0.01f, 1e-3f, kRho0, vji, kKernels.W(0.0001f));
+  const float volume = 1e-3f / kRho0, w = kKernels.W(0.0001f);
+  const Vec3 dv = xsphTerm(0.01f, volume, vji, w);
   EXPECT_GT(dv.x, 0.0f);
   EXPECT_EQ(dv.y, 0.0f);
+  // The pair's other particle takes the opposite: m Δv_i + m Δv_j = 0.
+  const Vec3 back = xsphTerm(0.01f, volume, Vec3{-1.0f, 0.0f, 0.0f}, w);
+  EXPECT_EQ(dv.x + back.x, 0.0f);
 }
 
 }  // namespace

@@ -57,10 +57,11 @@ SPH_HD Vec3 pbfWallDisplacement(float lambdaI, Vec3 wallGradientSum) {
 }
 
 // XSPH (Monaghan 1989), Macklin & Müller's viscosity: one neighbour's share of
-// the velocity's smoothing, c (m_j/ρ_j) (v_j - v_i) W_ij.
+// the velocity's smoothing, c V (v_j - v_i) W_ij, with V = m/ρ0 the same for both particles
+// of a pair so that the two shares are opposite and momentum stays (m/ρ_j would not).
 template <class S, class V>
-SPH_HD V xsphTerm(S coefficient, S massJ, S densityJ, V vji, S w) {
-  return vji * (coefficient * massJ / densityJ * w);
+SPH_HD V xsphTerm(S coefficient, S volume, V vji, S w) {
+  return vji * (coefficient * volume * w);
 }
 
 // The pressure the multipliers stand for. Δx = -Δt² ∇p/ρ over a step, and the symmetric
