@@ -16,6 +16,9 @@ constexpr std::uint32_t kNeighborOverflow = 0xffffffffu;
 constexpr std::size_t kBatchPadding = 16;
 // Floats in a record of the incompressible solver: 8, so that 8 neighbours load as 8 rows.
 constexpr std::uint32_t kRecordFields = 8;
+// Fluid particles listed per object particle for the position solver's reactions: a full
+// sphere of 1.5 h at h = 2 spacings holds 113 lattice points, an object's surface about half.
+constexpr std::uint32_t kObjectNeighborStride = 96;
 
 // Fluid particles, reordered by cell every step so neighbour loops read memory in order.
 template <class B>
@@ -69,8 +72,12 @@ struct FluidParticles {
   Buffer<float> coarseStiffness;      // the coarse level's K (coarse_correction.hpp)
   // The position solver (pbf_solve.hpp), per object boundary particle: xyz, Σ over the
   // substep's iterations of what the density constraints moved the fluid by through it, times
-  // the fluid's mass (kg m); its reaction is the opposite over Δt².
+  // the fluid's mass (kg m); its reaction is the opposite over Δt². And the fluid particles
+  // within 1.5 h of it at the predicted positions, listed once a substep for each iteration's
+  // gather (k's from k·kObjectNeighborStride; kNeighborOverflow: too many, search the cells).
   Buffer<Vec4> objectPush;
+  Buffer<std::uint32_t> objectNeighbors;
+  Buffer<std::uint32_t> objectNeighborCount;
   // ∇W_ij = g_ij (x_i - x_j) of each listed neighbour (n × neighborStride, beside neighbors),
   // kept by the step's first solver pass for the others (neighbor_walk.hpp)
   Buffer<float> pairGradient;

@@ -78,27 +78,64 @@ void endPositionSolve(FluidParticles<B>& fluid, float dt, float restDensity,
       });
 }
 
+// The iterations move the fluid by a small part of h: the fluid particles within 1.5 h of
+// each object particle at x*, found once a substep, hold every pair within h of it at any
+// iteration's positions.
+constexpr float kObjectReach = 1.5f;
+
+// Lists them (FluidParticles::objectNeighbors), and zeroes objectPush.
+template <class B>
+void listObjectNeighbors(FluidParticles<B>& fluid, const Grid<B>& grid,
+                         const BoundaryParticles<B>& objects, const FluidParameters& params) {
+  const std::size_t n = objects.count;
+  fluid.objectPush.resize(n);
+  fluid.objectNeighbors.resize(n * kObjectNeighborStride);
+  fluid.objectNeighborCount.resize(n);
+  const GridSpec spec = grid.spec;
+  const std::uint32_t* cellStart = grid.cellStart.data();
+  const Vec4* position = fluid.position.data();
+  const Vec4* object = objects.position.data();
+  Vec4* push = fluid.objectPush.data();
+  std::uint32_t* list = fluid.objectNeighbors.data();
+  std::uint32_t* listed = fluid.objectNeighborCount.data();
+  const float reach = kObjectReach * params.h, reach2 = reach * reach;
+  B::forEach(
+      n, SPH_LAMBDA(std::size_t k) {
+        const Vec3 xk = xyz(object[k]);
+        std::uint32_t* mine = list + k * kObjectNeighborStride;
+        std::uint32_t count = 0;
+        forEachNeighborWithin(spec, cellStart, xk, reach, [&](std::uint32_t i) {
+          if (lengthSquared(xyz(readOnly(position + i)) - xk) >= reach2) return;
+          if (count < kObjectNeighborStride) mine[count] = i;
+          ++count;
+        });
+        listed[k] = count <= kObjectNeighborStride ? count : kNeighborOverflow;
+        push[k] = Vec4{0.0f, 0.0f, 0.0f, 0.0f};
+      });
+}
+
 // What the last multiplier pass's λ (in `multipliers`, x, y, z, λ at that iteration's
 // positions) moves the fluid by through each object particle k, gathered from k's side and
 // added to objectPush: the fluid's share 2 λ_i ψ_k ∇W_ik (core/pbf.hpp) over the same pairs,
 // evaluated as the multiplier pass evaluates them, so that the object takes the exact
-// opposite of what the fluid got (to rounding in the sums' order). The fluid's grid lists the
-// particles at x*; the iterations move them by a small part of h, searched for within 1.5 h.
-// A named template, not a generic lambda: nvcc's device lambdas may not sit inside one.
+// opposite of what the fluid got (to rounding in the sums' order). A named template, not a
+// generic lambda: nvcc's device lambdas may not sit inside one.
 template <class B, class Kernels>
 void gatherObjectPush(FluidParticles<B>& fluid, const Grid<B>& grid,
                       const BoundaryParticles<B>& objects, const FluidParameters& params,
                       const float* multipliers, Kernels kernels) {
   const GridSpec spec = grid.spec;
   const std::uint32_t* cellStart = grid.cellStart.data();
+  const std::uint32_t* list = fluid.objectNeighbors.data();
+  const std::uint32_t* listed = fluid.objectNeighborCount.data();
   const Vec4* object = objects.position.data();  // w: ψ_k
   Vec4* push = fluid.objectPush.data();
-  const float h2 = params.h * params.h, reach = 1.5f * params.h, mass = params.mass;
+  const float h2 = params.h * params.h, reach = kObjectReach * params.h, mass = params.mass;
   B::forEach(
       objects.count, SPH_LAMBDA(std::size_t k) {
         const Vec4 xk = object[k];
         Vec3 sum{0.0f, 0.0f, 0.0f};
-        forEachNeighborWithin(spec, cellStart, xyz(xk), reach, [&](std::uint32_t i) {
+        const auto add = [&](std::uint32_t i) {
           const float* r = multipliers + kRecordFields * i;
           const Vec3 rik = Vec3{readOnly(r + PbfRecord::kX), readOnly(r + PbfRecord::kY),
                                 readOnly(r + PbfRecord::kZ)} -
@@ -107,7 +144,14 @@ void gatherObjectPush(FluidParticles<B>& fluid, const Grid<B>& grid,
           if (r2 >= h2 || r2 <= 0.0f) return;
           const Vec3 g = pairGradient(kernels, makePair(rik, r2, true, h2)) * xk.w;
           sum += pbfWallDisplacement(readOnly(r + PbfRecord::kLambda), g);
-        });
+        };
+        const std::uint32_t count = listed[k];
+        if (count != kNeighborOverflow) {
+          const std::uint32_t* mine = list + k * kObjectNeighborStride;
+          for (std::uint32_t m = 0; m < count; ++m) add(readOnly(mine + m));
+        } else {
+          forEachNeighborWithin(spec, cellStart, xyz(xk), reach, add);
+        }
         push[k] = makeVec4(xyz(push[k]) + sum * mass);
       });
 }
@@ -135,13 +179,7 @@ SolverReport solvePositions(FluidParticles<B>& fluid, const Grid<B>& grid,
                             const PbfSettings& settings, float dt, const DomainParameters& domain,
                             NeighborWalk walk) {
   SolverReport report;
-  fluid.objectPush.resize(objects.count);
-  const std::size_t objectCount = objects.count;
-  Vec4* push = fluid.objectPush.data();
-  B::forEach(
-      objectCount, SPH_LAMBDA(std::size_t k) {
-        push[k] = Vec4{0.0f, 0.0f, 0.0f, 0.0f};
-      });
+  detail::listObjectNeighbors(fluid, grid, objects, params);
   if (fluid.count == 0) return report;
   detail::beginPositionSolve(fluid);
   float* a = fluid.velocityRecords.data();   // x, y, z: the positions being corrected
