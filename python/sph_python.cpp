@@ -128,6 +128,7 @@ py::dict stats(const sph::Simulation& sim) {
   out["leaked_count"] = s.leakedCount;
   out["removed_count"] = s.removedCount;
   out["emitted_count"] = s.emittedCount;
+  out["clamped_count"] = s.clampedCount;
   out["density_iterations"] = s.densityIterations;
   out["divergence_iterations"] = s.divergenceIterations;
   out["unconverged_solves"] = s.unconvergedSolves;

@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
       ->add_option("--checkpoint-every", run.checkpointEvery,
                    "Save the whole state every T simulated seconds (at the first frame past), and "
                    "at the end, into DIR/checkpoints/ (the last two kept)")
-      ->check(CLI::Range(1, 1 << 30));
+      ->check(CLI::PositiveNumber);
   runCmd->add_option("--resume", run.resume,
                      "Continue the run in DIR from its newest checkpoint (a longer --duration "
                      "extends it)");
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--height", render.height, "Image height in pixels")
       ->check(CLI::Range(16, 8192));
   renderCmd->add_option("--fps", render.fps, "Video frames per second (default: the run's)")
-      ->check(CLI::Range(1, 1 << 30));
+      ->check(CLI::PositiveNumber);
   renderCmd->add_flag("--no-video", render.noVideo, "Images only");
   renderCmd->add_flag("--boundary", render.boundary, "Show the walls (DIR/boundary.EXT)");
   renderCmd->add_flag("--grid", render.grid, "Show the domain box and the uniform grid's cells");
@@ -120,8 +120,7 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--device", bench.device, "CUDA device index (see sph info)")
       ->check(CLI::NonNegativeNumber);
   benchCmd->add_option("--warmup", bench.warmupSteps, "Steps before timing");
-  benchCmd->add_option("--steps", bench.steps, "Timed steps per size")
-      ->check(CLI::Range(1, 1 << 30));
+  benchCmd->add_option("--steps", bench.steps, "Timed steps per size")->check(CLI::PositiveNumber);
   benchCmd->add_option("--scene", bench.scenes, "Also time this scene file (repeatable)");
   benchCmd->add_option("--set", bench.overrides, "Override a key of the --scene files")->take_all();
   benchCmd->add_option("--json", bench.json,

@@ -74,6 +74,10 @@ void printCalibration(std::FILE* out, const Simulation& sim) {
                  "XSPH c %.3g; pressure from the "
                  "multipliers, -rho0 sum(lambda) / dt^2\n",
                  d.tensileStrength, d.tensileDistance, d.xsph);
+    std::fprintf(out,
+                 "  speed guard          %.6g m/s: no predicted move past half the support "
+                 "radius in a substep (each limited speed counted in clamped_count)\n",
+                 c.pbfSpeedGuard);
   } else {
     std::fprintf(out, "  solver               weakly compressible (wcsph)\n");
     std::fprintf(out, "  first time step      %.6g s (CFL %.3g; adaptive unless time.fixed_dt)\n",
@@ -160,6 +164,7 @@ nlohmann::json statsJson(const FrameStats& s) {
           {"leaked_count", s.leakedCount},
           {"removed_count", s.removedCount},
           {"emitted_count", s.emittedCount},
+          {"clamped_count", s.clampedCount},
           {"contact_pairs", s.contactPairs},
           {"density_iterations_per_step",
            s.steps ? double(s.densityIterations) / double(s.steps) : 0.0},

@@ -38,6 +38,9 @@ struct Calibration {
   int substeps = 0;
   bool substepsFromScene = false;
   double pbfGradientSquares = 0.0;
+  // Its last guard, m/s: a speed that would carry a particle past half the support radius in a
+  // substep is limited to this one, and counted (Stats::clampedCount).
+  double pbfSpeedGuard = 0.0;
   std::uint64_t fluidParticles = 0;
   std::uint64_t objectParticles = 0;
   std::uint64_t boundaryParticles = 0;

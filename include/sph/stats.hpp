@@ -50,6 +50,9 @@ struct FrameStats {
   std::uint64_t leakedCount = 0;
   std::uint64_t removedCount = 0;  // outside the domain or in an outlet, since the start
   std::uint64_t emittedCount = 0;  // put in by the emitters, since the start
+  // Held back since the start: put back into the domain by its "clamp" policy, or their speed
+  // limited by the position solver's last guard (half the support radius a substep).
+  std::uint64_t clampedCount = 0;
   std::uint64_t contactPairs = 0;  // fluid–object pairs in contact, last step
   // The incompressible solver's iterations summed over every step so far (0 for the weakly
   // compressible one), and its solves that stopped at max_iterations short of the tolerance.

@@ -1,6 +1,7 @@
 // What a solve of the incompressible solver is asked for and what it reports (dfsph_solve.hpp).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace sph::fluid {
@@ -29,6 +30,7 @@ struct SolverReport {
   float averageError = 0.0f;  // relative, after the last iteration
   float largestError = 0.0f;  // of one particle
   bool converged = true;      // the tolerance met within the iterations allowed
+  std::size_t clamped = 0;    // the position solver: particles whose speed its guard limited
 };
 
 }  // namespace sph::fluid

@@ -49,22 +49,28 @@ void beginPositionSolve(FluidParticles<B>& fluid) {
       });
 }
 
-// The corrected positions out of the records: the velocity their move implies, the position
-// wrapped and kept in the domain as integration keeps it, the pressure.
+// The corrected positions out of the records: the velocity their move implies, limited to
+// maxSpeed, the position wrapped and kept in the domain as integration keeps it, the pressure.
+// Returns how many speeds were limited.
 template <class B>
-void endPositionSolve(FluidParticles<B>& fluid, float dt, float restDensity,
-                      const DomainParameters& domain) {
+std::size_t endPositionSolve(FluidParticles<B>& fluid, float dt, float restDensity, float maxSpeed,
+                             const DomainParameters& domain) {
   Vec4* position = fluid.position.data();
   Vec4* velocity = fluid.velocity.data();
   float* pressure = fluid.pressure.data();
   const float* records = fluid.velocityRecords.data();
   const float* total = fluid.solverTotal.data();
+  // Free once the density is kept: 1 where the guard limited the speed.
+  std::uint64_t* limited = fluid.solverError.data();
   const DomainParameters d = domain;
   B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
         const float* r = records + kRecordFields * i;
         const Vec3 corrected{r[PbfRecord::kX], r[PbfRecord::kY], r[PbfRecord::kZ]};
         Vec3 v = xyz(velocity[i]) + (corrected - xyz(position[i])) / dt;
+        const float speed2 = lengthSquared(v);
+        limited[i] = speed2 > maxSpeed * maxSpeed ? 1u : 0u;
+        if (limited[i] != 0u) v = v * (maxSpeed / realSqrt(speed2));
         Vec3 x = wrapIntoDomain(d.periodic, corrected);
         bool clamped = velocity[i].w != 0.0f;
         if (d.clampOutside && !d.dampedBox) {
@@ -76,6 +82,9 @@ void endPositionSolve(FluidParticles<B>& fluid, float dt, float restDensity,
         position[i] = makeVec4(x);
         pressure[i] = pbfPressure(total[i], restDensity, dt);
       });
+  return B::reduce(
+      fluid.count, std::size_t{0}, SPH_LAMBDA(std::size_t i) { return std::size_t(limited[i]); },
+      SPH_LAMBDA(std::size_t a, std::size_t b) { return a + b; });
 }
 
 // The iterations move the fluid by a small part of h: the fluid particles within 1.5 h of
@@ -217,7 +226,8 @@ SolverReport solvePositions(FluidParticles<B>& fluid, const Grid<B>& grid,
   report.largestError = settings.iterations > 0 ? detail::largestError(fluid) : 0.0f;
   report.converged = true;
   if (settings.iterations > 0) detail::keepSolvedDensity(fluid, params.restDensity);
-  detail::endPositionSolve(fluid, dt, params.restDensity, domain);
+  report.clamped =
+      detail::endPositionSolve(fluid, dt, params.restDensity, settings.maxSpeed, domain);
   return report;
 }
 

@@ -13,7 +13,7 @@ std::string headerOf(const std::vector<std::string>& objectNames) {
       "time,steps,dt,fluid_count,boundary_count,kinetic_energy,mean_density,"
       "max_density_error,max_speed,surface_count,leaked_count,removed_count,"
       "wall_ms_per_step,contact_pairs,average_density_error,density_iterations_per_step,"
-      "divergence_iterations_per_step,unconverged_solves,emitted_count";
+      "divergence_iterations_per_step,unconverged_solves,emitted_count,clamped_count";
   for (const std::string& name : objectNames) {
     for (const char* column : {"_force_x", "_force_y", "_force_z", "_com_x", "_com_y", "_com_z"})
       header += "," + name + column;
@@ -38,13 +38,14 @@ void StatsWriter::append(const FrameStats& s) {
   std::string row;
   appendFormatted(row,
                   "%.9g,%" PRIu64 ",%.9g,%" PRIu64 ",%" PRIu64 ",%.9g,%.9g,%.9g,%.9g,%" PRIu64
-                  ",%" PRIu64 ",%" PRIu64 ",%.9g,%" PRIu64 ",%.9g,%.9g,%.9g,%" PRIu64 ",%" PRIu64,
+                  ",%" PRIu64 ",%" PRIu64 ",%.9g,%" PRIu64 ",%.9g,%.9g,%.9g,%" PRIu64 ",%" PRIu64
+                  ",%" PRIu64,
                   s.time, s.steps, s.dt, s.fluidCount, s.boundaryCount, s.kineticEnergy,
                   s.meanDensity, s.maxDensityError, s.maxSpeed, s.surfaceCount, s.leakedCount,
                   s.removedCount, s.wallMsPerStep, s.contactPairs, s.averageDensityError,
                   perStep(s.densityIterations - previous_.densityIterations),
                   perStep(s.divergenceIterations - previous_.divergenceIterations),
-                  s.unconvergedSolves, s.emittedCount);
+                  s.unconvergedSolves, s.emittedCount, s.clampedCount);
   for (std::size_t o = 0; o < objectCount_; ++o) {
     // A row without the objects (a caller that does not track them) leaves their cells empty.
     const bool known = o < s.objects.size();

@@ -237,6 +237,8 @@ void calibratePositions(const Scene& scene, Calibration& out) {
   const double volume = out.mass / scene.fluid.restDensity;
   out.pbfGradientSquares =
       volume * volume * latticeGradientSquares(scene.fluid.kernel, out.supportRadius, out.spacing);
+  const double substep = t.fixedDt ? *t.fixedDt : t.frameDt / out.substeps;
+  out.pbfSpeedGuard = kPbfGuardMove * out.supportRadius / substep;
 }
 
 }  // namespace

@@ -34,6 +34,10 @@ objects::WorldSettings worldSettings(const Scene& scene, const Calibration& cali
 // The position solver's substep: no particle moves more than this many spacings in one (0.4 of
 // its radius) at the largest expected speed.
 constexpr double kPbfSubstepTravel = 0.2;
+// The position solver's last guard: no particle's next predicted move passes this share of
+// the support radius (Calibration::pbfSpeedGuard; at the derived substeps, 5 times the
+// expected speed).
+constexpr double kPbfGuardMove = 0.5;
 
 // Σ_j |∇W(x_i - x_j)|² over an infinite cubic lattice of the given spacing.
 double latticeGradientSquares(KernelKind kernel, double h, double spacing);

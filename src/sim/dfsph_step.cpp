@@ -31,7 +31,7 @@ std::vector<Simulation::Impl::Stage> Simulation::Impl::dfsphStages() const {
   // With boundary coupling, the reactions of the pressure the solves have just given.
   if (coupling.coupled())
     list.push_back({"forces on objects", &StepProfile::interaction, &Impl::collectObjectForces});
-  addStepEnd(list);
+  addStepEnd(list, {"integrate", &StepProfile::integrate, &Impl::integrate});
   return list;
 }
 

@@ -28,7 +28,8 @@ std::vector<Simulation::Impl::Stage> Simulation::Impl::pbfStages() const {
     list.push_back({"containment", &StepProfile::interaction, &Impl::checkContainment});
     list.push_back({"forces on objects", &StepProfile::interaction, &Impl::collectObjectForces});
   }
-  addStepEnd(list, /*moves=*/true);
+  // The solve has moved the particles already.
+  addStepEnd(list, {"advance clock", &StepProfile::integrate, &Impl::advanceClock});
   return list;
 }
 
@@ -39,7 +40,10 @@ void Simulation::Impl::solvePositions() {
   s.relaxation = float(d.relaxation * calibration.pbfGradientSquares);
   s.tensileStrength = float(d.tensileStrength / calibration.pbfGradientSquares);
   s.tensileDistance = float(d.tensileDistance * calibration.supportRadius);
-  solves.addDensity(engine->solvePositions(s, float(clock.dt)));
+  s.maxSpeed = float(calibration.pbfSpeedGuard);
+  const fluid::SolverReport report = engine->solvePositions(s, float(clock.dt));
+  counts.clamped += report.clamped;
+  solves.addDensity(report);
 }
 
 }  // namespace sph

@@ -74,9 +74,10 @@ struct Simulation::Impl {
   std::vector<Stage> wcsphStages() const;
   std::vector<Stage> dfsphStages() const;
   std::vector<Stage> pbfStages() const;
-  // The stages after the solver's own, the same for every solver (sim/step_end.cpp); `moves`:
-  // the solver has moved the particles itself, and only the clock is left to advance.
-  void addStepEnd(std::vector<Stage>& list, bool moves = false) const;
+  // The stages after the solver's own, the same for every solver (sim/step_end.cpp), around
+  // the solver's `move`: integration, or only the clock where the solver has moved the
+  // particles itself.
+  void addStepEnd(std::vector<Stage>& list, const Stage& move) const;
 
   // The stages (Stage::run): each does the work its name says, and is in a step's list only
   // where the scene gives it work.

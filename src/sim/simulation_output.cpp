@@ -251,6 +251,7 @@ FrameStats Simulation::Impl::statsWithoutParticles(const Simulation& sim) const 
   out.leakedCount = sim.leakedCount();
   out.removedCount = counts.removed;
   out.emittedCount = sim.emittedCount();
+  out.clampedCount = counts.clamped;
   out.contactPairs = coupling.contactPairs;
   out.densityIterations = solves.densityIterations;
   out.divergenceIterations = solves.divergenceIterations;

@@ -19,7 +19,7 @@ std::vector<Simulation::Impl::Stage> Simulation::Impl::wcsphStages() const {
   list.push_back({"time step", &StepProfile::timeStep, &Impl::chooseTimeStep});
   if (coupling.coupled())
     list.push_back({"forces on objects", &StepProfile::interaction, &Impl::collectObjectForces});
-  addStepEnd(list);
+  addStepEnd(list, {"integrate", &StepProfile::integrate, &Impl::integrate});
   return list;
 }
 

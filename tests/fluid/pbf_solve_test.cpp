@@ -50,7 +50,7 @@ struct Solved {
 };
 
 Solved solveLattice(const Lattice& lattice, const PbfSettings& settings, float dt,
-                    NeighborWalk walk) {
+                    NeighborWalk walk, std::size_t* clamped = nullptr) {
   Fluid fluid(lattice, KernelKind::CubicSpline, ViscosityModel::Artificial);
   fluid.params.pressureForces = false;
   fluid.densityPass(walk);
@@ -59,6 +59,7 @@ Solved solveLattice(const Lattice& lattice, const PbfSettings& settings, float d
                      settings, dt, fluid.domain, walk);
   Solved s;
   s.largest = report.largestError;
+  if (clamped != nullptr) *clamped = report.clamped;
   const std::vector<Vec4> x = fluid.byId(fluid.particles.position);
   const std::vector<Vec4> v = fluid.byId(fluid.particles.velocity);
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -102,6 +103,36 @@ TEST_P(PositionSolveStage, LeavesFluidThatIsNotCompressedWhereItIs) {
     ASSERT_EQ(s.position[i].y, lattice.position[i].y) << "particle " << i;
     ASSERT_EQ(s.position[i].z, lattice.position[i].z) << "particle " << i;
   }
+}
+
+// The last guard: a speed past it is limited to it, in its direction, and counted.
+TEST_P(PositionSolveStage, LimitsASpeedPastTheGuardAndCountsIt) {
+  const Lattice lattice = jitteredLattice(0.95f, 0.05f, 0.0f, 31);
+  const float dt = 1e-3f;
+  const Solved free = solveLattice(lattice, settingsWith(2), dt, GetParam());
+  float fastest = 0.0f;
+  for (const Vec3& v : free.velocity) fastest = std::max(fastest, length(v));
+  ASSERT_GT(fastest, 0.0f);
+  PbfSettings guarded = settingsWith(2);
+  guarded.maxSpeed = 0.5f * fastest;
+  std::size_t clamped = 0;
+  const Solved s = solveLattice(lattice, guarded, dt, GetParam(), &clamped);
+  std::size_t expected = 0;
+  for (std::size_t i = 0; i < s.velocity.size(); ++i) {
+    const float before = length(free.velocity[i]);
+    if (before <= guarded.maxSpeed) {
+      ASSERT_EQ(s.velocity[i].x, free.velocity[i].x) << "particle " << i;
+      continue;
+    }
+    ++expected;
+    EXPECT_NEAR(length(s.velocity[i]), guarded.maxSpeed, 1e-5f * guarded.maxSpeed);
+    EXPECT_NEAR(dot(s.velocity[i], free.velocity[i]), length(s.velocity[i]) * before,
+                1e-4f * before * guarded.maxSpeed);
+    // Where the constraints put it: the guard limits the speed, not the correction.
+    EXPECT_EQ(s.position[i].x, free.position[i].x);
+  }
+  EXPECT_GT(expected, 0u);
+  EXPECT_EQ(clamped, expected);
 }
 
 SPH_BOTH_WALKS(PositionSolveStage);

@@ -36,7 +36,7 @@ const char* const kHeader =
     "time,steps,dt,fluid_count,boundary_count,kinetic_energy,mean_density,max_density_error,"
     "max_speed,surface_count,leaked_count,removed_count,wall_ms_per_step,contact_pairs,"
     "average_density_error,density_iterations_per_step,divergence_iterations_per_step,"
-    "unconverged_solves,emitted_count";
+    "unconverged_solves,emitted_count,clamped_count";
 
 std::vector<std::string> readLines(const fs::path& file) {
   std::ifstream in(file);
@@ -73,6 +73,7 @@ FrameStats makeStats(int row) {
   s.densityIterations = 3u * s.steps;
   s.divergenceIterations = s.steps;
   s.unconvergedSolves = 2;
+  s.clampedCount = 5u * static_cast<std::uint64_t>(row);
   return s;
 }
 
@@ -89,9 +90,9 @@ TEST_F(StatsWriterTest, HeaderThenOneFlushedRowPerAppend) {
   EXPECT_EQ(lines[0], kHeader);
   EXPECT_EQ(lines[1],
             "0.25,101,0.00015,8000,1234,1.5,1000.125,0.0125,2.75,300,1,12345678901234,3.5,77,"
-            "0.0005,3,1,2,0");
+            "0.0005,3,1,2,0,5");
   const std::vector<std::string> fields = split(lines[2]);
-  ASSERT_EQ(fields.size(), 19u);
+  ASSERT_EQ(fields.size(), 20u);
   EXPECT_EQ(std::stod(fields[0]), 0.5);
   EXPECT_EQ(std::stoull(fields[1]), 201u);
   EXPECT_EQ(std::stod(fields[5]), 2.5);
@@ -99,6 +100,7 @@ TEST_F(StatsWriterTest, HeaderThenOneFlushedRowPerAppend) {
   // Per step over the 100 steps since the last row.
   EXPECT_EQ(std::stod(fields[15]), 3.0);
   EXPECT_EQ(std::stod(fields[16]), 1.0);
+  EXPECT_EQ(std::stoull(fields[19]), 10u);
 }
 
 TEST_F(StatsWriterTest, EachObjectHasForceAndCentreColumns) {
@@ -122,12 +124,12 @@ TEST_F(StatsWriterTest, EachObjectHasForceAndCentreColumns) {
                           ",ball_force_x,ball_force_y,ball_force_z,ball_com_x,ball_com_y,"
                           "ball_com_z");
   const std::vector<std::string> fields = split(lines[1]);
-  ASSERT_EQ(fields.size(), 19u + 12u);
-  EXPECT_EQ(std::stod(fields[19]), 1.5);
-  EXPECT_EQ(std::stod(fields[21]), 0.25);
-  EXPECT_EQ(std::stod(fields[24]), 0.3);
-  EXPECT_EQ(std::stod(fields[26]), 9.75);
-  EXPECT_EQ(std::stod(fields[28]), -1.0);
+  ASSERT_EQ(fields.size(), 20u + 12u);
+  EXPECT_EQ(std::stod(fields[20]), 1.5);
+  EXPECT_EQ(std::stod(fields[22]), 0.25);
+  EXPECT_EQ(std::stod(fields[25]), 0.3);
+  EXPECT_EQ(std::stod(fields[27]), 9.75);
+  EXPECT_EQ(std::stod(fields[29]), -1.0);
 }
 
 TEST_F(StatsWriterTest, NewWriterStartsAFreshFile) {
@@ -201,7 +203,7 @@ TEST_F(StatsWriterTest, ARowTheDiskTakesOnlyPartOfIsCutBackAndTheRowsBeforeStay)
   const std::vector<std::string> lines = readLines(file);
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(lines[0], kHeader);
-  EXPECT_EQ(split(lines[1]).size(), 19u);
+  EXPECT_EQ(split(lines[1]).size(), 20u);
 }
 
 }  // namespace
