@@ -237,6 +237,15 @@ TEST(Checkpoint, TheTornArteryResumesWithItsBrokenSpringsAndLeaks) {
   EXPECT_GT(after.leaked, 0u) << "the tear bleeds by then";
 }
 
+// The position solver's substeps with the objects as boundary particles: the clamp closing.
+TEST(Checkpoint, TheSqueezedArteryUnderThePositionSolverResumes) {
+  Scene scene = squeezedArtery();
+  scene.fluid.solver = FluidSolver::Pbf;
+  scene.interaction.coupling = ObjectCoupling::Boundary;
+  const ObjectsAfter after = expectObjectsResume(scene, 0.2, 40);
+  EXPECT_GT(std::abs(after.objects[1].contactForce[1]), 0.0) << "the clamp presses";
+}
+
 // An engine stepping every second fluid step (its pacing and the forces it has been handed so
 // far are state too), objects as boundary particles of the incompressible solver, and a clamp
 // the user has steered away from its keyframes.
