@@ -16,8 +16,12 @@ constexpr std::uint32_t kNeighborOverflow = 0xffffffffu;
 constexpr std::size_t kBatchPadding = 16;
 // Floats in a record of the incompressible solver: 8, so that 8 neighbours load as 8 rows.
 constexpr std::uint32_t kRecordFields = 8;
-// Fluid particles listed per object particle for the position solver's reactions: a full
-// sphere of 1.5 h at h = 2 spacings holds 113 lattice points, an object's surface about half.
+// The position solver's reactions on objects: the fluid particles within 1.5 h of each object
+// particle at the predicted positions, listed once a substep. The solve and XSPH move the
+// fluid by a small part of h, so the list holds every pair within h at any later positions of
+// the substep. A full sphere of 1.5 h at h = 2 spacings holds 113 lattice points, an object's
+// surface about half of that.
+constexpr float kObjectReach = 1.5f;  // of h
 constexpr std::uint32_t kObjectNeighborStride = 96;
 
 // Fluid particles, reordered by cell every step so neighbour loops read memory in order.

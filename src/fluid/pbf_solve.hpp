@@ -87,12 +87,8 @@ std::size_t endPositionSolve(FluidParticles<B>& fluid, float dt, float restDensi
       SPH_LAMBDA(std::size_t a, std::size_t b) { return a + b; });
 }
 
-// The iterations move the fluid by a small part of h: the fluid particles within 1.5 h of
-// each object particle at x*, found once a substep, hold every pair within h of it at any
-// iteration's positions.
-constexpr float kObjectReach = 1.5f;
-
-// Lists them (FluidParticles::objectNeighbors), and zeroes objectPush.
+// Lists the fluid particles within kObjectReach of each object particle at x*
+// (FluidParticles::objectNeighbors), and zeroes objectPush.
 template <class B>
 void listObjectNeighbors(FluidParticles<B>& fluid, const Grid<B>& grid,
                          const BoundaryParticles<B>& objects, const FluidParameters& params) {

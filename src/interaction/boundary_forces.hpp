@@ -29,9 +29,11 @@ namespace sph::interaction {
 
 namespace detail {
 
-// Both forces in one walk over each boundary particle's fluid neighbours. A named template, not
-// a generic lambda: nvcc's device lambdas may not sit inside one.
-template <bool kArtificial, bool kPressure, class B, class Kernels>
+// Both forces in one walk over each boundary particle's fluid neighbours: under the position
+// solver the viscous force alone, over the fluid its solve listed near each object particle
+// (fluid::FluidParticles::objectNeighbors). A named template, not a generic lambda: nvcc's
+// device lambdas may not sit inside one.
+template <bool kArtificial, bool kPositionSolver, class B, class Kernels>
 void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::Grid<B>& grid,
                            const fluid::BoundaryParticles<B>& boundary, ObjectParticles<B>& objects,
                            const fluid::FluidParameters& params, Kernels kernels) {
@@ -45,6 +47,9 @@ void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::G
   const Vec4* particle = boundary.position.data();  // w: ψ_k
   const Vec4* particleVelocity = boundary.velocity.data();
   const std::uint32_t* twin = boundary.id.data();  // its index in ObjectParticles
+  const std::uint32_t* list = fluid.objectNeighbors.data();
+  const std::uint32_t* listed = fluid.objectNeighborCount.data();
+  const float reach = fluid::kObjectReach * params.h;
   Vec4* force = objects.force.data();
   const fluid::ForceConstants<float, Vec3, Kernels> constants(params, kernels);
   const float h2 = params.h * params.h;
@@ -60,13 +65,18 @@ void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::G
         // there.
         (void)pressure;
         (void)density;
-        fluid::forEachNeighbor(spec, cellStart, xyz(xk), [&](std::uint32_t i) {
+        (void)list;
+        (void)listed;
+        (void)reach;
+        (void)spec;
+        (void)cellStart;
+        const auto visit = [&](std::uint32_t i) {
           const Vec3 rik = xyz(readOnly(position + i)) - xyz(xk);
           const float r2 = lengthSquared(rik);
           if (r2 >= h2 || r2 <= 0.0f) return;
           const auto pair = fluid::makePair(rik, r2, true, h2);
           const Vec3 gradW = pair.rij * pair.where(kernels.gradFactor(pair.r));
-          if constexpr (kPressure) {
+          if constexpr (!kPositionSolver) {
             const float ki =
                 pressureOverDensitySquared(readOnly(pressure + i), readOnly(density + i));
             sum += pressureAccelerationSymmetric(volumeMass, ki, ki, gradW);
@@ -75,7 +85,18 @@ void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::G
           sum += fluid::boundaryFriction<kArtificial>(
               constants, densityI, volumeMass, xyz(readOnly(velocity + i)) - vk, pair, gradW);
           near += 1.0f;
-        });
+        };
+        if constexpr (kPositionSolver) {
+          const std::uint32_t count = listed[k];
+          if (count != fluid::kNeighborOverflow) {
+            const std::uint32_t* mine = list + k * fluid::kObjectNeighborStride;
+            for (std::uint32_t m = 0; m < count; ++m) visit(readOnly(mine + m));
+          } else {
+            fluid::forEachNeighborWithin(spec, cellStart, xyz(xk), reach, visit);
+          }
+        } else {
+          fluid::forEachNeighbor(spec, cellStart, xyz(xk), visit);
+        }
         const Vec4 f = force[twin[k]];
         force[twin[k]] = makeVec4(xyz(f) - sum * mass, f.w + near);
       });
@@ -83,22 +104,24 @@ void addBoundaryForcesWith(const fluid::FluidParticles<B>& fluid, const fluid::G
 
 }  // namespace detail
 
-// `pressure`: false under the position solver, whose push addConstraintReactions adds.
+// `positionSolver`: the viscous force alone, over the position solver's lists; its push
+// addConstraintReactions adds.
 template <class B>
 void addBoundaryForces(const fluid::FluidParticles<B>& fluid, const fluid::Grid<B>& grid,
                        const fluid::BoundaryParticles<B>& boundary, ObjectParticles<B>& objects,
-                       const fluid::FluidParameters& params, bool pressure = true) {
+                       const fluid::FluidParameters& params, bool positionSolver = false) {
   if (boundary.count == 0 || fluid.count == 0) return;
+  if (positionSolver && fluid.objectNeighborCount.size() != boundary.count) return;
   const bool artificial = params.viscosityModel == ViscosityModel::Artificial;
   fluid::withKernels(params, [&](auto kernels) {
-    if (artificial && pressure)
-      detail::addBoundaryForcesWith<true, true>(fluid, grid, boundary, objects, params, kernels);
-    else if (artificial)
+    if (artificial && !positionSolver)
       detail::addBoundaryForcesWith<true, false>(fluid, grid, boundary, objects, params, kernels);
-    else if (pressure)
-      detail::addBoundaryForcesWith<false, true>(fluid, grid, boundary, objects, params, kernels);
-    else
+    else if (artificial)
+      detail::addBoundaryForcesWith<true, true>(fluid, grid, boundary, objects, params, kernels);
+    else if (!positionSolver)
       detail::addBoundaryForcesWith<false, false>(fluid, grid, boundary, objects, params, kernels);
+    else
+      detail::addBoundaryForcesWith<false, true>(fluid, grid, boundary, objects, params, kernels);
   });
 }
 

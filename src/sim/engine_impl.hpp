@@ -170,7 +170,7 @@ class EngineImpl final : public FluidEngine {
   void addConstraintReactions(float dt) override {
     interaction::addConstraintReactions(fluid_, objectBoundary_, objects_, dt);
     interaction::addBoundaryForces(fluid_, grid_, objectBoundary_, objects_, params_,
-                                   /*pressure=*/false);
+                                   /*positionSolver=*/true);
   }
   std::size_t computeContacts(const interaction::InteractionParameters& params) override {
     return interaction::computeContacts(fluid_, grid_, objects_, containment_, params);
