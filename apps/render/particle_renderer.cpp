@@ -9,6 +9,7 @@
 
 #include "colour_bar.hpp"
 #include "gl_program.hpp"
+#include "liquid_surface.hpp"
 #include "shaders.hpp"
 #include "wireframe.hpp"
 
@@ -24,6 +25,12 @@ namespace {
 
 // Light from the upper left, slightly in front: a 3/4 view's spheres read as round.
 constexpr float kLight[3] = {-0.40f, 0.70f, 0.59f};
+
+// The liquid's spheres in units of the particles' (half a spacing): a little larger, so that
+// neighbours overlap and the smoothing has one surface to flatten rather than a lattice of
+// bumps with holes between, and not so large that the liquid swells past the particles' edge
+// (at twice the size it covered 9 % more of a block's picture than its particles).
+constexpr float kLiquidRadius = 1.25f;
 
 void vertexAttribute(GLuint index, GLint components, GLenum type, GLboolean normalised,
                      GLsizei stride, std::size_t offset) {
@@ -55,6 +62,12 @@ ParticleRenderer::ParticleRenderer() : programs_(std::make_unique<Programs>()) {
   glBindBuffer(GL_ARRAY_BUFFER, lineBuffer_);
   vertexAttribute(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), 0);
 
+  glGenVertexArrays(1, &liquidVao_);
+  glGenBuffers(1, &liquidBuffer_);
+  glBindVertexArray(liquidVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, liquidBuffer_);
+  vertexAttribute(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), 0);
+
   glGenVertexArrays(1, &overlayVao_);
   glGenBuffers(1, &overlayBuffer_);
   glBindVertexArray(overlayVao_);
@@ -65,10 +78,12 @@ ParticleRenderer::ParticleRenderer() : programs_(std::make_unique<Programs>()) {
 }
 
 ParticleRenderer::~ParticleRenderer() {
-  const GLuint buffers[] = {positionBuffer_, colourBuffer_, lineBuffer_, overlayBuffer_};
-  glDeleteBuffers(4, buffers);
-  const GLuint arrays[] = {particleVao_, lineVao_, overlayVao_};
-  glDeleteVertexArrays(3, arrays);
+  liquid_.reset();
+  const GLuint buffers[] = {positionBuffer_, colourBuffer_, lineBuffer_, overlayBuffer_,
+                            liquidBuffer_};
+  glDeleteBuffers(5, buffers);
+  const GLuint arrays[] = {particleVao_, lineVao_, overlayVao_, liquidVao_};
+  glDeleteVertexArrays(4, arrays);
 }
 
 void ParticleRenderer::reserve(std::size_t particles) {
@@ -98,6 +113,17 @@ void ParticleRenderer::setParticles(const ParticleFrame& frame) {
   frame_ = frame;
   reserve(frame.size());
   uploadPositions(frame_, 0);
+  // The fluid alone, for the liquid view.
+  std::vector<float> fluid;
+  for (std::size_t i = 0; i < frame.size(); ++i)
+    if (frame.kind[i] == static_cast<std::uint8_t>(ParticleKind::Fluid)) {
+      fluid.insert(fluid.end(), &frame.position[3 * i], &frame.position[3 * i] + 3);
+      fluid.push_back(1.0f);
+    }
+  liquidCount_ = fluid.size() / 4;
+  glBindBuffer(GL_ARRAY_BUFFER, liquidBuffer_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(fluid.size() * sizeof(float)), fluid.data(),
+               GL_DYNAMIC_DRAW);
 }
 
 void ParticleRenderer::setParticlesBehindFluid(std::size_t fluidCount, ValueRange fluidRange,
@@ -110,6 +136,7 @@ void ParticleRenderer::setParticlesBehindFluid(std::size_t fluidCount, ValueRang
   fluidOnGpu_ = fluidCount;
   fluidOnGpuRange_ = fluidRange;
   frame_ = solids;
+  liquidCount_ = 0;
   uploadPositions(frame_, fluidCount);
 }
 
@@ -119,6 +146,7 @@ void ParticleRenderer::uploadColours(const DrawSettings& settings, const OrbitCa
   else
     range_ = fluidOnGpu_ > 0 ? fluidOnGpuRange_ : rangeFromFrames({&frame_}, settings.colour);
   ParticleFilter show = settings.show;
+  if (settings.look == Look::Liquid) show.fluid = false;  // drawn as a surface instead
   if (settings.cutaway)
     show.cut = CutPlane{camera.target, normalize(subtract(camera.target, camera.eye()))};
   const std::vector<std::uint8_t> rgba = particleColours(frame_, settings.colour, range_, show);
@@ -148,8 +176,12 @@ void ParticleRenderer::draw(const OrbitCamera& camera, const DrawSettings& setti
   if (particleCount() > 0) {
     uploadColours(settings, camera);
     drawParticles(view, projection, settings, height);
+    if (settings.look == Look::Liquid && settings.show.fluid)
+      drawLiquid(view, projection, settings, width, height);
   }
-  if (settings.showColourBar && usesRange(settings.colour)) drawColourBar(width, height);
+  // The bar maps the fluid's colours, which the liquid look does not show.
+  if (settings.showColourBar && usesRange(settings.colour) && settings.look == Look::Particles)
+    drawColourBar(width, height);
   glBindVertexArray(0);
 }
 
@@ -168,8 +200,21 @@ void ParticleRenderer::drawParticles(const Mat4f& view, const Mat4f& projection,
   glEnable(GL_PROGRAM_POINT_SIZE);
   glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   glBindVertexArray(particleVao_);
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(particleCount()));
+  // The liquid view leaves out the fluid a GPU wrote (its colours are the GPU's).
+  const std::size_t first = settings.look == Look::Liquid ? fluidOnGpu_ : 0;
+  glDrawArrays(GL_POINTS, static_cast<GLint>(first), static_cast<GLsizei>(particleCount() - first));
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+}
+
+void ParticleRenderer::drawLiquid(const Mat4f& view, const Mat4f& projection,
+                                  const DrawSettings& settings, int width, int height) {
+  const bool onGpu = fluidOnGpu_ > 0;
+  const std::size_t count = onGpu ? fluidOnGpu_ : liquidCount_;
+  if (count == 0) return;
+  if (!liquid_) liquid_ = std::make_unique<LiquidSurface>();
+  liquid_->draw(onGpu ? particleVao_ : liquidVao_, 0, count, view, projection,
+                kLiquidRadius * settings.particleRadius, 2.0f * settings.particleRadius,
+                settings.liquid, settings.background, width, height);
 }
 
 void ParticleRenderer::drawLines(const std::vector<float>& lines, const Mat4f& viewProjection,

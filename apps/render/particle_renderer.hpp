@@ -1,6 +1,7 @@
 // Draws a frame's particles as shaded spheres, coloured through colour_map / particle_colours,
-// with an optional domain box, grid and colour bar. It needs only a current OpenGL 3.3 core
-// context (an OffscreenContext, or a window's) and draws into whatever framebuffer is bound.
+// or its fluid as a liquid surface, with an optional domain box, grid and colour bar. It needs only
+// a current OpenGL 3.3 core context (an OffscreenContext, or a window's) and draws into whatever
+// framebuffer is bound.
 #pragma once
 
 #include <cstddef>
@@ -11,10 +12,13 @@
 
 #include "camera.hpp"
 #include "colour_map.hpp"
+#include "liquid_style.hpp"
 #include "particle_colours.hpp"
 #include "sph/frame.hpp"
 
 namespace sph::render {
+
+class LiquidSurface;
 
 struct DrawSettings {
   ColourMode colour = ColourMode::Kind;
@@ -30,6 +34,10 @@ struct DrawSettings {
   // target facing the camera), so the fluid inside a vessel shows.
   bool cutaway = false;
   Rgb background{0.11f, 0.12f, 0.14f};
+  // The fluid as spheres coloured by `colour`, or as a liquid surface (liquid_surface.hpp),
+  // the walls and objects as spheres either way.
+  Look look = Look::Particles;
+  LiquidStyle liquid;
 };
 
 class ParticleRenderer {
@@ -58,6 +66,8 @@ class ParticleRenderer {
   std::size_t particleCount() const { return fluidOnGpu_ + frame_.size(); }
   // The range the last draw mapped colours over (its settings' or the particles').
   ValueRange rangeUsed() const { return range_; }
+  // The liquid view's passes, once a draw has used them (for tests); else null.
+  const LiquidSurface* liquidSurface() const { return liquid_.get(); }
 
   // The GL buffer of positions, 4 floats per particle (x, y, z, unused), with room for
   // `capacity` particles: a GPU simulation can write into it through CUDA–OpenGL interop
@@ -79,7 +89,13 @@ class ParticleRenderer {
   void drawLines(const std::vector<float>& lines, const Mat4f& viewProjection, const Rgb& colour);
   void drawColourBar(int width, int height);
 
+  void drawLiquid(const Mat4f& view, const Mat4f& projection, const DrawSettings& settings,
+                  int width, int height);
+
   std::unique_ptr<Programs> programs_;
+  std::unique_ptr<LiquidSurface> liquid_;
+  unsigned liquidVao_ = 0, liquidBuffer_ = 0;  // the host frame's fluid alone
+  std::size_t liquidCount_ = 0;
   unsigned particleVao_ = 0, positionBuffer_ = 0, colourBuffer_ = 0;
   unsigned lineVao_ = 0, lineBuffer_ = 0;
   unsigned overlayVao_ = 0, overlayBuffer_ = 0;

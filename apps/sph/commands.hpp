@@ -27,6 +27,7 @@ struct RunOptions {
   bool force = false;
   bool quiet = false;
   bool render = false;           // then `sph render` the run's directory with its defaults
+  bool surface = false;          // then `sph surface` it, with its defaults
   double checkpointEvery = 0.0;  // simulated seconds between checkpoints; 0: none
   std::string resume;            // a run's directory to continue from its newest checkpoint
 };
@@ -34,7 +35,9 @@ struct RunOptions {
 struct RenderOptions {
   std::string dir;
   std::string colour = "kind";  // kind, density, pressure, speed or surface
-  std::vector<double> range;    // {min, max}; empty: from the run's fluid
+  // liquid or particles; empty: the scene's render.look, particles when colouring by a quantity
+  std::string look;
+  std::vector<double> range;  // {min, max}; empty: from the run's fluid
   int width = 1280;
   int height = 720;
   double fps = 0.0;  // 0: the run's frame rate (summary.json), else 30
@@ -42,6 +45,14 @@ struct RenderOptions {
   bool boundary = false;  // show the walls
   bool cutaway = false;   // leave out the walls and objects in front of the camera's target
   bool grid = false;      // show the domain and the uniform grid's cells
+  bool quiet = false;
+};
+
+struct SurfaceOptions {
+  std::string dir;
+  std::string format = "vtp";  // vtp, obj or ply
+  double voxel = 0.6;          // the level set's voxel, in spacings
+  int smoothing = 3;           // mean-curvature passes
   bool quiet = false;
 };
 
@@ -54,6 +65,7 @@ struct ViewCommandOptions {
   int width = 1280;
   int height = 720;
   std::string colour = "kind";
+  std::string look;  // liquid or particles; empty: the scene's
   bool noProbe = false;
   int frames = 0;  // close after this many displayed frames (0: when the window closes)
   std::string screenshot;
@@ -89,6 +101,9 @@ int infoCommand();
 int benchCommand(const BenchOptions& options);
 // Images (DIR/images/frame_NNNNN.png) and a video (DIR/video.mp4) of a finished run.
 int renderCommand(const RenderOptions& options);
+// sph surface: each frame's fluid as a closed triangle mesh (surface_command.cpp).
+int surfaceCommand(const SurfaceOptions& options);
+bool surfaceBuilt();
 // The interactive viewer (apps/view). Exit 1 when no window can be opened.
 int viewCommand(const ViewCommandOptions& options);
 bool viewerBuilt();

@@ -43,6 +43,8 @@ int main(int argc, char** argv) {
                      "extends it)");
   runCmd->add_flag("--render", run.render,
                    "Then render the run: DIR/images/*.png and DIR/video.mp4 (as sph render)");
+  runCmd->add_flag("--surface", run.surface,
+                   "Then mesh the fluid of each frame: DIR/surface/*.vtp (as sph surface)");
 
   std::string validateScene;
   std::vector<std::string> validateOverrides;
@@ -68,6 +70,11 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--colour,--color", render.colour, "Colour by what (default: kind)")
       ->check(CLI::IsMember({"kind", "density", "pressure", "speed", "surface"}));
   renderCmd
+      ->add_option("--look", render.look,
+                   "The fluid as a liquid surface or as particles (default: the scene's "
+                   "render.look, liquid unless set; particles with a --colour other than kind)")
+      ->check(CLI::IsMember({"liquid", "particles"}));
+  renderCmd
       ->add_option("--range", render.range,
                    "MIN,MAX of the colour map (default: the fluid's 2nd-98th percentile)")
       ->delimiter(',')
@@ -86,6 +93,23 @@ int main(int argc, char** argv) {
                       "the fluid inside them");
   renderCmd->add_flag("--quiet", render.quiet, "No progress output");
 
+  SurfaceOptions surface;
+  auto* surfaceCmd = app.add_subcommand(
+      "surface", "Each frame's fluid of an earlier run as a closed triangle mesh (OpenVDB)");
+  surfaceCmd->add_option("dir", surface.dir, "The run's output directory (sph run --out DIR)")
+      ->required();
+  surfaceCmd->add_option("--format", surface.format, "Mesh files: vtp, obj or ply (default: vtp)")
+      ->check(CLI::IsMember({"vtp", "obj", "ply"}));
+  surfaceCmd
+      ->add_option("--voxel", surface.voxel,
+                   "The level set's voxel edge in fluid spacings (default: 0.6)")
+      ->check(CLI::Range(0.05, 4.0));
+  surfaceCmd
+      ->add_option("--smoothing", surface.smoothing,
+                   "Mean-curvature smoothing passes of the level set (default: 3)")
+      ->check(CLI::Range(0, 100));
+  surfaceCmd->add_flag("--quiet", surface.quiet, "No progress output");
+
   ViewCommandOptions view;
   auto* viewCmd = app.add_subcommand("view", "The interactive viewer: a window that runs a scene");
   viewCmd->add_option("scene", view.scene, "Scene file (JSON)")->required();
@@ -102,6 +126,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(16, 8192));
   viewCmd->add_option("--colour,--color", view.colour, "Colour by what (default: kind)")
       ->check(CLI::IsMember({"kind", "density", "pressure", "speed", "surface"}));
+  viewCmd
+      ->add_option("--look", view.look,
+                   "The fluid as a liquid surface or as particles (default: the scene's "
+                   "render.look, liquid unless set; particles with a --colour other than kind)")
+      ->check(CLI::IsMember({"liquid", "particles"}));
   viewCmd->add_flag("--no-probe", view.noProbe, "No sphere for the mouse to drag");
   viewCmd->add_option("--frames", view.frames, "Close after this many displayed frames")
       ->check(CLI::NonNegativeNumber);
@@ -160,12 +189,14 @@ int main(int argc, char** argv) {
       if (!fps.empty()) run.overrides.push_back("output.fps=" + fps);
       if (!format.empty()) run.overrides.push_back("output.format=" + format);
       if (run.render && !rendererBuilt()) return renderCommand({});  // says why, before running
+      if (run.surface && !surfaceBuilt()) return surfaceCommand({});
       return runCommand(run);
     }
     if (*validateCmd) return validateCommand(validateScene, validateOverrides);
     if (*infoCmd) return infoCommand();
     if (*plotCmd) return plotCommand(plot);
     if (*renderCmd) return renderCommand(render);
+    if (*surfaceCmd) return surfaceCommand(surface);
     if (*viewCmd) return viewCommand(view);
     if (*benchCmd) return benchCommand(bench);
     return static_cast<int>(kExitBadInput);

@@ -112,6 +112,16 @@ std::vector<const ParticleFrame*> frames(const std::vector<ParticleFrame>& sampl
   return all;
 }
 
+// The liquid surface shows the fluid as it looks; a quantity is read off the particles.
+render::Look chooseLook(const RenderOptions& options, const RenderRunInfo& info,
+                        render::ColourMode colour) {
+  if (!options.look.empty())
+    return options.look == "particles" ? render::Look::Particles : render::Look::Liquid;
+  if (colour != render::ColourMode::Kind) return render::Look::Particles;
+  return info.look.value_or("liquid") == "particles" ? render::Look::Particles
+                                                     : render::Look::Liquid;
+}
+
 struct Scene {
   render::DrawSettings settings;
   render::OrbitCamera camera;
@@ -132,6 +142,15 @@ Scene prepareScene(const RenderOptions& options, const io::RunFrameFiles& files,
     settings.range = render::rangeFromFrames(frames, settings.colour);
   }
   settings.particleRadius = 0.5f * info.spacing.value_or(estimateSpacing(sample.front()));
+  settings.look = chooseLook(options, info, settings.colour);
+  if (info.liquidColour) {
+    const render::Vec3f& c = *info.liquidColour;
+    settings.liquid.colour = render::Rgb{c[0], c[1], c[2]};
+  }
+  if (info.absorption) {
+    const render::Vec3f& a = *info.absorption;
+    settings.liquid.absorption = render::Rgb{a[0], a[1], a[2]};
+  }
   if (options.boundary && !files.boundary.empty()) scene.walls = io::readFrame(files.boundary);
 
   Box3f particles = emptyBox();
@@ -147,11 +166,23 @@ Scene prepareScene(const RenderOptions& options, const io::RunFrameFiles& files,
   // The colour bar takes the right edge: frame as if the picture were a fifth narrower.
   const bool bar = render::usesRange(settings.colour) && settings.showColourBar;
   const float aspect = float(options.width) / float(options.height) * (bar ? 0.8f : 1.0f);
+  // What has left the domain (a piece torn off a vessel, falling away) is not what the
+  // picture is of.
+  const auto inDomain = [&](const float* p) {
+    if (!info.domain) return true;
+    const Box3f& d = *info.domain;
+    for (int c = 0; c < 3; ++c) {
+      const float margin = 0.1f * (d.max[c] - d.min[c]);
+      if (p[c] < d.min[c] - margin || p[c] > d.max[c] + margin) return false;
+    }
+    return true;
+  };
   std::vector<render::Vec3f> points;
   for (const ParticleFrame* frame : frames(sample, scene.walls))
     for (std::size_t i = 0; i < frame->size(); ++i)
-      points.push_back(
-          {frame->position[3 * i], frame->position[3 * i + 1], frame->position[3 * i + 2]});
+      if (inDomain(&frame->position[3 * i]))
+        points.push_back(
+            {frame->position[3 * i], frame->position[3 * i + 1], frame->position[3 * i + 2]});
   if (options.grid)
     for (int c = 0; c < 8; ++c)
       points.push_back({c & 1 ? settings.domain.max[0] : settings.domain.min[0],
@@ -167,8 +198,13 @@ Scene prepareScene(const RenderOptions& options, const io::RunFrameFiles& files,
 void printPlan(const RenderOptions& options, const io::RunFrameFiles& files, const Scene& scene,
                const render::OffscreenContext& context) {
   const render::DrawSettings& s = scene.settings;
-  std::printf("rendering %zu frames of %s at %dx%d, colour by %s", files.frames.size(),
-              options.dir.c_str(), options.width, options.height, render::colourModeName(s.colour));
+  if (s.look == render::Look::Liquid)
+    std::printf("rendering %zu frames of %s at %dx%d, the fluid as a liquid surface",
+                files.frames.size(), options.dir.c_str(), options.width, options.height);
+  else
+    std::printf("rendering %zu frames of %s at %dx%d, colour by %s", files.frames.size(),
+                options.dir.c_str(), options.width, options.height,
+                render::colourModeName(s.colour));
   if (s.range && render::usesRange(s.colour))
     std::printf(" from %.6g%s (bottom of the colour bar) to %.6g%s (top)", s.range->min,
                 unitOf(s.colour), s.range->max, unitOf(s.colour));

@@ -61,6 +61,14 @@ RenderRunInfo readRenderRunInfo(const std::filesystem::path& dir) {
   const auto min = point(summary, "/scene/domain/min", file);
   const auto max = point(summary, "/scene/domain/max", file);
   if (min && max) info.domain = render::Box3f{*min, *max};
+  const json::json_pointer look("/scene/render/look");
+  if (summary.contains(look)) {
+    if (!summary.at(look).is_string())
+      throw InputError(file.string() + ": key 'scene/render/look' is not a string");
+    info.look = summary.at(look).get<std::string>();
+  }
+  info.liquidColour = point(summary, "/scene/render/colour", file);
+  info.absorption = point(summary, "/scene/render/absorption", file);
   return info;
 }
 

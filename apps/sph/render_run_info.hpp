@@ -1,9 +1,11 @@
 // What `sph render` takes from a run's summary.json (its resolved scene): frame rate, particle
-// spacing, support radius, domain. A run without one still renders, from the frames alone.
+// spacing, support radius, domain, and how its fluid looks. A run without one still renders, from
+// the frames alone.
 #pragma once
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "camera.hpp"
 
@@ -14,6 +16,8 @@ struct RenderRunInfo {
   std::optional<float> spacing;        // fluid.spacing, m
   std::optional<float> supportRadius;  // spacing × fluid.support_ratio: the grid's cell size
   std::optional<render::Box3f> domain;
+  std::optional<std::string> look;  // render.look: "liquid" or "particles"
+  std::optional<render::Vec3f> liquidColour, absorption;
 };
 
 // Reads DIR/summary.json when present. Throws InputError naming the file and the key when it is

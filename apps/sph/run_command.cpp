@@ -263,6 +263,13 @@ int runCommand(const RunOptions& options) {
       std::printf("probes at %g per second in %s/probes.csv\n", scene.output.probeRate,
                   output.dir().c_str());
   }
+  if (options.surface) {
+    SurfaceOptions surface;
+    surface.dir = output.dir().string();
+    surface.quiet = options.quiet;
+    const int status = surfaceCommand(surface);
+    if (status != kExitOk) return status;
+  }
   if (options.render) {
     RenderOptions render;
     render.dir = output.dir().string();

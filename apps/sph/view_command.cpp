@@ -20,6 +20,7 @@ int viewCommand(const ViewCommandOptions& options) {
   view.width = options.width;
   view.height = options.height;
   view.colour = options.colour;
+  view.look = options.look;
   view.probe = !options.noProbe;
   view.frames = options.frames;
   view.screenshot = options.screenshot;

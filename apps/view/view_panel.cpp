@@ -90,7 +90,10 @@ void drawSettings(ViewerState& state, const render::ValueRange& range) {
       if (ImGui::Selectable(render::colourModeName(mode), mode == d.colour)) d.colour = mode;
     ImGui::EndCombo();
   }
-  if (render::usesRange(d.colour)) colourBar(range);
+  bool liquid = d.look == render::Look::Liquid;
+  if (ImGui::Checkbox("liquid surface (l)", &liquid))
+    d.look = liquid ? render::Look::Liquid : render::Look::Particles;
+  if (render::usesRange(d.colour) && !liquid) colourBar(range);
   ImGui::Checkbox("fluid", &d.show.fluid);
   ImGui::SameLine();
   ImGui::Checkbox("walls (b)", &d.show.boundary);

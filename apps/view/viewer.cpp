@@ -98,6 +98,18 @@ render::Box3f boxOf(const AxisBox& box) {
           {float(box.max[0]), float(box.max[1]), float(box.max[2])}};
 }
 
+render::Rgb rgbOf(const Vec3d& v) {
+  return {float(v[0]), float(v[1]), float(v[2])};
+}
+
+// The liquid surface shows the fluid as it looks; a quantity is read off the particles.
+render::Look chooseLook(const std::string& asked, FluidLook scenes, render::ColourMode colour) {
+  if (!asked.empty()) return asked == "particles" ? render::Look::Particles : render::Look::Liquid;
+  if (colour != render::ColourMode::Kind || scenes == FluidLook::Particles)
+    return render::Look::Particles;
+  return render::Look::Liquid;
+}
+
 // Keys act on their press, not while held.
 void handleKeys(ViewerState& state) {
   if (ImGui::GetIO().WantCaptureKeyboard) return;
@@ -111,6 +123,8 @@ void handleKeys(ViewerState& state) {
   if (ImGui::IsKeyPressed(GLFW_KEY_O, false)) d.show.objects = !d.show.objects;
   if (ImGui::IsKeyPressed(GLFW_KEY_C, false))
     d.colour = render::ColourMode((int(d.colour) + 1) % 5);
+  if (ImGui::IsKeyPressed(GLFW_KEY_L, false))
+    d.look = d.look == render::Look::Liquid ? render::Look::Particles : render::Look::Liquid;
 }
 
 // A kinematic object held by ctrl + left drag: the point of it the cursor took hold of moves
@@ -247,6 +261,8 @@ void runViewer(const Scene& original, const ViewOptions& options) {
   if (!mode)
     throw InputError("--colour: expected kind, density, pressure, speed or surface, got '" +
                      options.colour + "'");
+  if (!options.look.empty() && options.look != "liquid" && options.look != "particles")
+    throw InputError("--look: expected liquid or particles, got '" + options.look + "'");
   Scene scene = original;
   if (options.probe) addProbe(scene);
   Grab held;
@@ -263,6 +279,9 @@ void runViewer(const Scene& original, const ViewOptions& options) {
   state.fluidPath = feed.path();
   state.probes.reset(sim->probeColumns());
   state.draw.colour = *mode;
+  state.draw.look = chooseLook(options.look, scene.render.look, *mode);
+  state.draw.liquid.colour = rgbOf(scene.render.colour);
+  state.draw.liquid.absorption = rgbOf(scene.render.absorption);
   // The scene's own first kinematic object (the artery's clamp) is watched from the start.
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     if (scene.objects[o].motion != ObjectMotion::Kinematic) continue;

@@ -346,6 +346,18 @@ struct ObjectEngineDesc {
   bool ownThread = true;  // in its own thread, in lock-step with the fluid (deterministic)
 };
 
+// How `sph render` and `sph view` draw the scene's fluid (scene "render"): as a liquid surface
+// or as particles; a liquid's colour where it is deep and how fast it absorbs the light through
+// it (Beer–Lambert: a layer t thick lets exp(−a t) through, per colour channel). The defaults
+// are clear water's; blood is about colour [0.3, 0.015, 0.02], absorption [300, 3000, 3000].
+enum class FluidLook { Liquid, Particles };
+
+struct RenderDesc {
+  FluidLook look = FluidLook::Liquid;
+  Vec3d colour{0.18, 0.50, 0.80};     // RGB, each in [0, 1]
+  Vec3d absorption{40.0, 12.0, 6.0};  // 1/m per channel
+};
+
 struct Scene {
   std::string name;
   std::string description;
@@ -365,6 +377,7 @@ struct Scene {
   std::vector<OutletDesc> outlets;
   FailureDesc failure;
   LimitsDesc limits;
+  RenderDesc render;
 };
 
 }  // namespace sph

@@ -338,6 +338,16 @@ const SceneKeys<OutputDesc>& outputKeys() {
   return keys;
 }
 
+// Past 1e6 /m a layer a micron thick is opaque: nothing a scene's spacing resolves.
+const SceneKeys<RenderDesc>& renderKeys() {
+  static const SceneKeys<RenderDesc> keys{{
+      choice("look", at(&RenderDesc::look), kLookNames),
+      vec3Within("colour", at(&RenderDesc::colour), 0.0, 1.0),
+      vec3Within("absorption", at(&RenderDesc::absorption), 0.0, 1e6),
+  }};
+  return keys;
+}
+
 const SceneKeys<ProbeDesc>& probeKeys() {
   static const SceneKeys<ProbeDesc> keys{
       {
@@ -459,6 +469,7 @@ const SceneKeys<Scene>& sceneKeys() {
            namedAfter<OutletDesc>(kOutletName)),
       section("failure", at(&Scene::failure), failureKeys()),
       section("limits", at(&Scene::limits), limitsKeys()),
+      section("render", at(&Scene::render), renderKeys()),
   }};
   return keys;
 }

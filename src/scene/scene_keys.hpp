@@ -203,6 +203,17 @@ SceneKey<Desc> vec3(const std::string& name, Field<Desc, Vec3d> f,
           {}};
 }
 
+// Each coordinate within [lo, hi].
+template <class Desc>
+SceneKey<Desc> vec3Within(const std::string& name, Field<Desc, Vec3d> f, double lo, double hi) {
+  return {
+      name,
+      [=](const ObjectReader& in, Desc& d) { f.get(d) = in.vec3Within(name, f.get(d), lo, hi); },
+      [=](const Desc& d, nlohmann::json& out) { out[name] = f.read(d); },
+      vec3Schema(name),
+      {}};
+}
+
 template <class Desc>
 SceneKey<Desc> requiredVec3(const std::string& name, Field<Desc, Vec3d> f,
                             double largest = kLargestCoordinate) {

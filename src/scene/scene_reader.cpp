@@ -180,6 +180,18 @@ Vec3d ObjectReader::vec3(const std::string& key, const Vec3d& fallback, double l
   return value == nullptr ? fallback : checkedVec3(*value, key, largest);
 }
 
+Vec3d ObjectReader::vec3Within(const std::string& key, const Vec3d& fallback, double lo,
+                               double hi) const {
+  const json* value = find(key);
+  if (value == nullptr) return fallback;
+  const Vec3d v = checkedVec3(*value, key, kLargestCoordinate);
+  for (double c : v)
+    if (!(c >= lo && c <= hi))
+      context_->fail(keyPath(key), "expected 3 numbers from " + formatNumber(lo) + " to " +
+                                       formatNumber(hi) + ", got " + describeValue(*value));
+  return v;
+}
+
 Vec3d ObjectReader::requiredVec3(const std::string& key, double largest) const {
   return checkedVec3(require(key), key, largest);
 }

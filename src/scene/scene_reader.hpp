@@ -54,9 +54,9 @@ struct NumberRule {
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 inline constexpr NumberRule kPositive{0, kInfinity, true, true};
 inline constexpr NumberRule kNonNegative{0, kInfinity, false, true};
-inline constexpr NumberRule kClosedUnit{0, 1, false, false};   // [0, 1]
-inline constexpr NumberRule kUnitStep{0, 1, true, false};      // (0, 1]
-inline constexpr NumberRule kOpenUnit{0, 1, true, true};       // (0, 1)
+inline constexpr NumberRule kClosedUnit{0, 1, false, false};  // [0, 1]
+inline constexpr NumberRule kUnitStep{0, 1, true, false};     // (0, 1]
+inline constexpr NumberRule kOpenUnit{0, 1, true, true};      // (0, 1)
 // Physical ranges, so that what validate accepts, run runs: a particle spacing from a micron to
 // 100 m (below, a lattice index overflows and nothing is sampled), a time step from a
 // nanosecond to 10 s (below, time stops advancing in double precision within a run), frames
@@ -108,6 +108,8 @@ class ObjectReader {
   Vec3d vec3(const std::string& key, const Vec3d& fallback,
              double largest = kLargestCoordinate) const;
   Vec3d requiredVec3(const std::string& key, double largest = kLargestCoordinate) const;
+  // Each coordinate within [lo, hi].
+  Vec3d vec3Within(const std::string& key, const Vec3d& fallback, double lo, double hi) const;
 
   template <class Enum, std::size_t N>
   Enum choice(const std::string& key, Enum fallback, const NamedValue<Enum> (&names)[N]) const;

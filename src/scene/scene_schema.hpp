@@ -73,6 +73,8 @@ inline constexpr NamedValue<ObjectCoupling> kCouplingNames[] = {
     {"contact", ObjectCoupling::Contact}, {"boundary", ObjectCoupling::Boundary}};
 inline constexpr NamedValue<ViscosityModel> kViscosityNames[] = {
     {"muller", ViscosityModel::Muller}, {"artificial", ViscosityModel::Artificial}};
+inline constexpr NamedValue<FluidLook> kLookNames[] = {{"liquid", FluidLook::Liquid},
+                                                       {"particles", FluidLook::Particles}};
 inline constexpr NamedValue<FrameFormat> kFormatNames[] = {{"vtp", FrameFormat::Vtp},
                                                            {"ply", FrameFormat::Ply},
                                                            {"csv", FrameFormat::Csv},

@@ -167,6 +167,11 @@ TEST(SceneErrors, ValuesOutOfRange) {
       {"/failure/max_density_error", -0.1, "failure.max_density_error: expected a positive"},
       {"/failure/max_speed", 0, "failure.max_speed: expected a number in (0, 10000] or null"},
       {"/limits/max_particles", -1, "limits.max_particles: expected a non-negative number"},
+      {"/render/look", "spheres", "render.look: expected one of \"liquid\", \"particles\""},
+      {"/render/colour", json::array({1.0, 0.5, 2.0}),
+       "render.colour: expected 3 numbers from 0 to 1, got [1.0,0.5,2.0]"},
+      {"/render/absorption", json::array({-1.0, 0.0, 0.0}),
+       "render.absorption: expected 3 numbers from 0 to 1000000, got [-1.0,0.0,0.0]"},
       // Values past any physical scene, that once failed at step 0 (exit 3) or hung.
       {"/fluid/rest_density", 1e300, "fluid.rest_density: expected a number in [0.001, 100000]"},
       {"/gravity", json::array({0, -1e308, 0}),
