@@ -14,17 +14,18 @@ constexpr float kDegree = float(kPi / 180.0);
 
 }  // namespace
 
-void OrbitCamera::frame(const Box3f& box, float aspect) {
+void OrbitCamera::frame(const Box3f& box, float aspect, float yawDegrees, float pitchDegrees) {
   std::vector<Vec3f> corners;
   for (int corner = 0; corner < 8; ++corner)
     corners.push_back({corner & 1 ? box.max[0] : box.min[0], corner & 2 ? box.max[1] : box.min[1],
                        corner & 4 ? box.max[2] : box.min[2]});
-  frame(corners, aspect);
+  frame(corners, aspect, yawDegrees, pitchDegrees);
 }
 
-void OrbitCamera::frame(const std::vector<Vec3f>& points, float aspect) {
-  yaw = 35.0f * kDegree;
-  pitch = 25.0f * kDegree;
+void OrbitCamera::frame(const std::vector<Vec3f>& points, float aspect, float yawDegrees,
+                        float pitchDegrees) {
+  yaw = yawDegrees * kDegree;
+  pitch = pitchDegrees * kDegree;
   target = {0, 0, 0};
   if (points.empty()) return;
   Box3f box{points.front(), points.front()};

@@ -24,11 +24,15 @@ class OrbitCamera {
   float pitch = 0.0f;           // radians above the horizontal plane (positive looks down)
   float verticalFov = 0.6109f;  // radians (35°): little distortion at close range
 
-  // A 3/4 view from the front right and above, the box centred in the picture, at the least
+  // A view from `yawDegrees` about +y and `pitchDegrees` above the horizontal (by default a 3/4
+  // view from the front right and above), the box centred in the picture, at the least
   // distance that keeps its corners in sight for this aspect ratio (width / height), plus a margin.
-  void frame(const Box3f& box, float aspect);
+  void frame(const Box3f& box, float aspect, float yawDegrees = kFrameYaw,
+             float pitchDegrees = kFramePitch);
   // The same view, closer: every point in sight, what they cover centred in the picture.
-  void frame(const std::vector<Vec3f>& points, float aspect);
+  void frame(const std::vector<Vec3f>& points, float aspect, float yawDegrees = kFrameYaw,
+             float pitchDegrees = kFramePitch);
+  static constexpr float kFrameYaw = 35.0f, kFramePitch = 25.0f;
 
   Vec3f eye() const;
   Mat4f view() const;

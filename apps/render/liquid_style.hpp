@@ -4,6 +4,8 @@
 // turning blue over tens of centimetres.
 #pragma once
 
+#include <string>
+
 #include "colour_map.hpp"
 
 namespace sph::render {
@@ -20,5 +22,13 @@ struct LiquidStyle {
 
 // Whether to draw the fluid as shaded spheres, or as a liquid surface.
 enum class Look { Particles, Liquid };
+
+// The look asked for ("liquid", "particles"), else the scene's, except that a quantity (a
+// colour mode other than kind) is read off the particles.
+inline Look chooseLook(const std::string& asked, bool sceneWantsParticles, ColourMode colour) {
+  if (!asked.empty()) return asked == "particles" ? Look::Particles : Look::Liquid;
+  if (colour != ColourMode::Kind || sceneWantsParticles) return Look::Particles;
+  return Look::Liquid;
+}
 
 }  // namespace sph::render

@@ -45,6 +45,8 @@ struct RenderOptions {
   bool boundary = false;  // show the walls
   bool cutaway = false;   // leave out the walls and objects in front of the camera's target
   bool grid = false;      // show the domain and the uniform grid's cells
+  double yaw = 35.0;      // the camera's angle about +y, degrees (0: looking along -z)
+  double pitch = 25.0;    // and above the horizontal (negative: from below)
   bool quiet = false;
 };
 

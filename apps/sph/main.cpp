@@ -91,6 +91,16 @@ int main(int argc, char** argv) {
   renderCmd->add_flag("--cutaway", render.cutaway,
                       "Leave out the objects and walls in front of the view's centre, to show "
                       "the fluid inside them");
+  renderCmd
+      ->add_option("--yaw", render.yaw,
+                   "The camera's angle about the vertical, degrees (default: 35, from the front "
+                   "right)")
+      ->check(CLI::Range(-360.0, 360.0));
+  renderCmd
+      ->add_option("--pitch", render.pitch,
+                   "The camera's angle above the horizontal, degrees; negative looks from below "
+                   "(default: 25)")
+      ->check(CLI::Range(-85.0, 85.0));
   renderCmd->add_flag("--quiet", render.quiet, "No progress output");
 
   SurfaceOptions surface;

@@ -112,16 +112,6 @@ std::vector<const ParticleFrame*> frames(const std::vector<ParticleFrame>& sampl
   return all;
 }
 
-// The liquid surface shows the fluid as it looks; a quantity is read off the particles.
-render::Look chooseLook(const RenderOptions& options, const RenderRunInfo& info,
-                        render::ColourMode colour) {
-  if (!options.look.empty())
-    return options.look == "particles" ? render::Look::Particles : render::Look::Liquid;
-  if (colour != render::ColourMode::Kind) return render::Look::Particles;
-  return info.look.value_or("liquid") == "particles" ? render::Look::Particles
-                                                     : render::Look::Liquid;
-}
-
 struct Scene {
   render::DrawSettings settings;
   render::OrbitCamera camera;
@@ -142,7 +132,8 @@ Scene prepareScene(const RenderOptions& options, const io::RunFrameFiles& files,
     settings.range = render::rangeFromFrames(frames, settings.colour);
   }
   settings.particleRadius = 0.5f * info.spacing.value_or(estimateSpacing(sample.front()));
-  settings.look = chooseLook(options, info, settings.colour);
+  settings.look =
+      render::chooseLook(options.look, info.look.value_or("") == "particles", settings.colour);
   if (info.liquidColour) {
     const render::Vec3f& c = *info.liquidColour;
     settings.liquid.colour = render::Rgb{c[0], c[1], c[2]};
@@ -189,9 +180,9 @@ Scene prepareScene(const RenderOptions& options, const io::RunFrameFiles& files,
                         c & 2 ? settings.domain.max[1] : settings.domain.min[1],
                         c & 4 ? settings.domain.max[2] : settings.domain.min[2]});
   if (points.empty())
-    scene.camera.frame(settings.domain, aspect);
+    scene.camera.frame(settings.domain, aspect, float(options.yaw), float(options.pitch));
   else
-    scene.camera.frame(points, aspect);
+    scene.camera.frame(points, aspect, float(options.yaw), float(options.pitch));
   return scene;
 }
 

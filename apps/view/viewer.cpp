@@ -102,14 +102,6 @@ render::Rgb rgbOf(const Vec3d& v) {
   return {float(v[0]), float(v[1]), float(v[2])};
 }
 
-// The liquid surface shows the fluid as it looks; a quantity is read off the particles.
-render::Look chooseLook(const std::string& asked, FluidLook scenes, render::ColourMode colour) {
-  if (!asked.empty()) return asked == "particles" ? render::Look::Particles : render::Look::Liquid;
-  if (colour != render::ColourMode::Kind || scenes == FluidLook::Particles)
-    return render::Look::Particles;
-  return render::Look::Liquid;
-}
-
 // Keys act on their press, not while held.
 void handleKeys(ViewerState& state) {
   if (ImGui::GetIO().WantCaptureKeyboard) return;
@@ -279,7 +271,8 @@ void runViewer(const Scene& original, const ViewOptions& options) {
   state.fluidPath = feed.path();
   state.probes.reset(sim->probeColumns());
   state.draw.colour = *mode;
-  state.draw.look = chooseLook(options.look, scene.render.look, *mode);
+  state.draw.look =
+      render::chooseLook(options.look, scene.render.look == FluidLook::Particles, *mode);
   state.draw.liquid.colour = rgbOf(scene.render.colour);
   state.draw.liquid.absorption = rgbOf(scene.render.absorption);
   // The scene's own first kinematic object (the artery's clamp) is watched from the start.

@@ -59,6 +59,18 @@ TEST(Camera, FramedBoxCornersAreInsideTheViewport) {
   }
 }
 
+TEST(Camera, FramedFromBelowTheBoxIsStillInTheViewport) {
+  const Box3f box{{-0.01f, -0.02f, -0.02f}, {0.05f, 0.02f, 0.02f}};
+  OrbitCamera camera;
+  camera.frame(box, 16.0f / 9.0f, -20.0f, -30.0f);
+  EXPECT_LT(camera.eye()[1], camera.target[1]);  // looking up at it
+  for (const Vec3f& corner : corners(box)) {
+    const auto ndc = project(camera, 16.0f / 9.0f, corner);
+    EXPECT_LT(std::abs(ndc[0]), 1.0f);
+    EXPECT_LT(std::abs(ndc[1]), 1.0f);
+  }
+}
+
 TEST(Camera, FramedPointsAreCentredAndInside) {
   std::vector<Vec3f> points;
   for (int i = 0; i < 50; ++i) {
