@@ -155,7 +155,8 @@ Scene prepareScene(const RenderOptions& options, const io::RunFrameFiles& files,
   // Framed on the particles (and the domain when its grid is shown), not on the domain alone: a
   // domain is often far larger than what moves in it.
   // The colour bar takes the right edge: frame as if the picture were a fifth narrower.
-  const bool bar = render::usesRange(settings.colour) && settings.showColourBar;
+  const bool bar = render::usesRange(settings.colour) && settings.showColourBar &&
+                   settings.look == render::Look::Particles;
   const float aspect = float(options.width) / float(options.height) * (bar ? 0.8f : 1.0f);
   // What has left the domain (a piece torn off a vessel, falling away) is not what the
   // picture is of.
@@ -196,7 +197,7 @@ void printPlan(const RenderOptions& options, const io::RunFrameFiles& files, con
     std::printf("rendering %zu frames of %s at %dx%d, colour by %s", files.frames.size(),
                 options.dir.c_str(), options.width, options.height,
                 render::colourModeName(s.colour));
-  if (s.range && render::usesRange(s.colour))
+  if (s.range && render::usesRange(s.colour) && s.look == render::Look::Particles)
     std::printf(" from %.6g%s (bottom of the colour bar) to %.6g%s (top)", s.range->min,
                 unitOf(s.colour), s.range->max, unitOf(s.colour));
   std::printf("\n  with %s\n", context.description().c_str());
