@@ -10,6 +10,7 @@
 #include "colour_bar.hpp"
 #include "gl_program.hpp"
 #include "liquid_surface.hpp"
+#include "object_surfaces.hpp"
 #include "shaders.hpp"
 #include "wireframe.hpp"
 
@@ -19,6 +20,7 @@ struct ParticleRenderer::Programs {
   GlProgram spheres{"sphere", shaders::kSphereVertex, shaders::kSphereFragment};
   GlProgram lines{"line", shaders::kLineVertex, shaders::kLineFragment};
   GlProgram overlay{"overlay", shaders::kOverlayVertex, shaders::kOverlayFragment};
+  GlProgram surfaces{"object surface", shaders::kSurfaceVertex, shaders::kSurfaceFragment};
 };
 
 namespace {
@@ -42,6 +44,11 @@ void vertexAttribute(GLuint index, GLint components, GLenum type, GLboolean norm
 // Lines a little lighter than the background, so they show without competing with the fluid.
 Rgb lineColour(const Rgb& background, float lift) {
   return {background.r + lift, background.g + lift, background.b + lift};
+}
+
+std::optional<CutPlane> cutPlane(const DrawSettings& settings, const OrbitCamera& camera) {
+  if (!settings.cutaway) return std::nullopt;
+  return CutPlane{camera.target, normalize(subtract(camera.target, camera.eye()))};
 }
 
 }  // namespace
@@ -68,6 +75,15 @@ ParticleRenderer::ParticleRenderer() : programs_(std::make_unique<Programs>()) {
   glBindBuffer(GL_ARRAY_BUFFER, liquidBuffer_);
   vertexAttribute(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), 0);
 
+  glGenVertexArrays(1, &surfaceVao_);
+  glGenBuffers(1, &surfaceBuffer_);
+  glBindVertexArray(surfaceVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, surfaceBuffer_);
+  constexpr GLsizei corner = SurfaceTriangles::kFloatsPerCorner * sizeof(float);
+  vertexAttribute(0, 3, GL_FLOAT, GL_FALSE, corner, 0);
+  vertexAttribute(1, 3, GL_FLOAT, GL_FALSE, corner, 3 * sizeof(float));
+  vertexAttribute(2, 3, GL_FLOAT, GL_FALSE, corner, 6 * sizeof(float));
+
   glGenVertexArrays(1, &overlayVao_);
   glGenBuffers(1, &overlayBuffer_);
   glBindVertexArray(overlayVao_);
@@ -79,11 +95,11 @@ ParticleRenderer::ParticleRenderer() : programs_(std::make_unique<Programs>()) {
 
 ParticleRenderer::~ParticleRenderer() {
   liquid_.reset();
-  const GLuint buffers[] = {positionBuffer_, colourBuffer_, lineBuffer_, overlayBuffer_,
-                            liquidBuffer_};
-  glDeleteBuffers(5, buffers);
-  const GLuint arrays[] = {particleVao_, lineVao_, overlayVao_, liquidVao_};
-  glDeleteVertexArrays(4, arrays);
+  const GLuint buffers[] = {positionBuffer_, colourBuffer_, lineBuffer_,
+                            overlayBuffer_,  liquidBuffer_, surfaceBuffer_};
+  glDeleteBuffers(6, buffers);
+  const GLuint arrays[] = {particleVao_, lineVao_, overlayVao_, liquidVao_, surfaceVao_};
+  glDeleteVertexArrays(5, arrays);
 }
 
 void ParticleRenderer::reserve(std::size_t particles) {
@@ -113,17 +129,34 @@ void ParticleRenderer::setParticles(const ParticleFrame& frame) {
   frame_ = frame;
   reserve(frame.size());
   uploadPositions(frame_, 0);
-  // The fluid alone, for the liquid view.
+  liquidStale_ = true;
+}
+
+// The host frame's fluid alone, for the liquid view, once per frame that draws it.
+void ParticleRenderer::uploadLiquid() {
+  if (!liquidStale_) return;
+  liquidStale_ = false;
   std::vector<float> fluid;
-  for (std::size_t i = 0; i < frame.size(); ++i)
-    if (frame.kind[i] == static_cast<std::uint8_t>(ParticleKind::Fluid)) {
-      fluid.insert(fluid.end(), &frame.position[3 * i], &frame.position[3 * i] + 3);
+  for (std::size_t i = 0; i < frame_.size(); ++i)
+    if (frame_.kind[i] == static_cast<std::uint8_t>(ParticleKind::Fluid)) {
+      fluid.insert(fluid.end(), &frame_.position[3 * i], &frame_.position[3 * i] + 3);
       fluid.push_back(1.0f);
     }
   liquidCount_ = fluid.size() / 4;
   glBindBuffer(GL_ARRAY_BUFFER, liquidBuffer_);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(fluid.size() * sizeof(float)), fluid.data(),
                GL_DYNAMIC_DRAW);
+}
+
+void ParticleRenderer::setObjectSurfaces(std::vector<ObjectSurfaceMesh> surfaces) {
+  surfaces_ = std::move(surfaces);
+  objectHasSurface_.clear();
+  for (const ObjectSurfaceMesh& mesh : surfaces_) {
+    if (mesh.object < 0) continue;
+    if (objectHasSurface_.size() <= std::size_t(mesh.object))
+      objectHasSurface_.resize(mesh.object + 1, 0);
+    objectHasSurface_[mesh.object] = 1;
+  }
 }
 
 void ParticleRenderer::setParticlesBehindFluid(std::size_t fluidCount, ValueRange fluidRange,
@@ -137,6 +170,7 @@ void ParticleRenderer::setParticlesBehindFluid(std::size_t fluidCount, ValueRang
   fluidOnGpuRange_ = fluidRange;
   frame_ = solids;
   liquidCount_ = 0;
+  liquidStale_ = false;
   uploadPositions(frame_, fluidCount);
 }
 
@@ -147,10 +181,16 @@ void ParticleRenderer::uploadColours(const DrawSettings& settings, const OrbitCa
     range_ = fluidOnGpu_ > 0 ? fluidOnGpuRange_ : rangeFromFrames({&frame_}, settings.colour);
   ParticleFilter show = settings.show;
   if (settings.look == Look::Liquid) show.fluid = false;  // drawn as a surface instead
-  if (settings.cutaway)
-    show.cut = CutPlane{camera.target, normalize(subtract(camera.target, camera.eye()))};
-  const std::vector<std::uint8_t> rgba = particleColours(frame_, settings.colour, range_, show);
+  show.cut = cutPlane(settings, camera);
+  std::vector<std::uint8_t> rgba = particleColours(frame_, settings.colour, range_, show);
   if (rgba.empty()) return;
+  if (settings.objectSurfaces)  // drawn as their surfaces instead
+    for (std::size_t i = 0; i < frame_.size(); ++i) {
+      const std::int32_t object = frame_.object[i];
+      if (frame_.kind[i] == static_cast<std::uint8_t>(ParticleKind::Object) && object >= 0 &&
+          std::size_t(object) < objectHasSurface_.size() && objectHasSurface_[object])
+        rgba[4 * i + 3] = 0;
+    }
   glBindBuffer(GL_ARRAY_BUFFER, colourBuffer_);
   glBufferSubData(GL_ARRAY_BUFFER, GLintptr(4 * fluidOnGpu_), GLsizeiptr(rgba.size()), rgba.data());
 }
@@ -176,6 +216,8 @@ void ParticleRenderer::draw(const OrbitCamera& camera, const DrawSettings& setti
   if (particleCount() > 0) {
     uploadColours(settings, camera);
     drawParticles(view, projection, settings, height);
+    if (settings.objectSurfaces && settings.show.objects && !surfaces_.empty())
+      drawObjectSurfaces(view, projection, cutPlane(settings, camera));
     if (settings.look == Look::Liquid && settings.show.fluid)
       drawLiquid(view, projection, settings, width, height);
   }
@@ -209,12 +251,36 @@ void ParticleRenderer::drawParticles(const Mat4f& view, const Mat4f& projection,
 void ParticleRenderer::drawLiquid(const Mat4f& view, const Mat4f& projection,
                                   const DrawSettings& settings, int width, int height) {
   const bool onGpu = fluidOnGpu_ > 0;
+  if (!onGpu) uploadLiquid();
   const std::size_t count = onGpu ? fluidOnGpu_ : liquidCount_;
   if (count == 0) return;
   if (!liquid_) liquid_ = std::make_unique<LiquidSurface>();
   liquid_->draw(onGpu ? particleVao_ : liquidVao_, 0, count, view, projection,
                 kLiquidRadius * settings.particleRadius, 2.0f * settings.particleRadius,
                 settings.liquid, settings.background, width, height);
+}
+
+void ParticleRenderer::drawObjectSurfaces(const Mat4f& view, const Mat4f& projection,
+                                          const std::optional<CutPlane>& cut) {
+  const SurfaceTriangles triangles = objectSurfaceTriangles(surfaces_, frame_);
+  if (triangles.corners.empty()) return;
+  const GlProgram& program = programs_->surfaces;
+  glUseProgram(program.id());
+  glUniformMatrix4fv(program.uniform("view"), 1, GL_FALSE, view.data());
+  glUniformMatrix4fv(program.uniform("projection"), 1, GL_FALSE, projection.data());
+  const float length =
+      std::sqrt(kLight[0] * kLight[0] + kLight[1] * kLight[1] + kLight[2] * kLight[2]);
+  glUniform3f(program.uniform("lightDirection"), kLight[0] / length, kLight[1] / length,
+              kLight[2] / length);
+  glUniform1i(program.uniform("cutaway"), cut ? 1 : 0);
+  if (cut)
+    glUniform4f(program.uniform("cutPlane"), cut->normal[0], cut->normal[1], cut->normal[2],
+                dot(cut->normal, cut->point));
+  glBindVertexArray(surfaceVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, surfaceBuffer_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(triangles.corners.size() * sizeof(float)),
+               triangles.corners.data(), GL_STREAM_DRAW);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangles.triangleCount()));
 }
 
 void ParticleRenderer::drawLines(const std::vector<float>& lines, const Mat4f& viewProjection,

@@ -15,6 +15,7 @@
 #include "liquid_style.hpp"
 #include "particle_colours.hpp"
 #include "sph/frame.hpp"
+#include "sph/object_surface.hpp"
 
 namespace sph::render {
 
@@ -38,6 +39,9 @@ struct DrawSettings {
   // the walls and objects as spheres either way.
   Look look = Look::Particles;
   LiquidStyle liquid;
+  // Objects with a surface (setObjectSurfaces) drawn as it, deforming and torn with them; the
+  // others, and all when false, as spheres.
+  bool objectSurfaces = true;
 };
 
 class ParticleRenderer {
@@ -51,6 +55,9 @@ class ParticleRenderer {
 
   // Uploads positions now; colours follow at the next draw, for its settings.
   void setParticles(const ParticleFrame& frame);
+  // The surfaces objects are drawn with, anchored on the frames' particle ids (a run's
+  // object_surfaces.vtp, or Simulation::objectSurfaces()); empty: objects as particles.
+  void setObjectSurfaces(std::vector<ObjectSurfaceMesh> surfaces);
   // Room for `particles` in the position and colour buffers. Growing replaces their storage,
   // so a CUDA registration of them must be made again.
   void reserve(std::size_t particles);
@@ -91,11 +98,18 @@ class ParticleRenderer {
 
   void drawLiquid(const Mat4f& view, const Mat4f& projection, const DrawSettings& settings,
                   int width, int height);
+  void drawObjectSurfaces(const Mat4f& view, const Mat4f& projection,
+                          const std::optional<CutPlane>& cut);
+  void uploadLiquid();
 
   std::unique_ptr<Programs> programs_;
   std::unique_ptr<LiquidSurface> liquid_;
   unsigned liquidVao_ = 0, liquidBuffer_ = 0;  // the host frame's fluid alone
   std::size_t liquidCount_ = 0;
+  bool liquidStale_ = false;  // frame_ changed since the liquid's buffer was filled
+  std::vector<ObjectSurfaceMesh> surfaces_;
+  std::vector<std::uint8_t> objectHasSurface_;  // by object index
+  unsigned surfaceVao_ = 0, surfaceBuffer_ = 0;
   unsigned particleVao_ = 0, positionBuffer_ = 0, colourBuffer_ = 0;
   unsigned lineVao_ = 0, lineBuffer_ = 0;
   unsigned overlayVao_ = 0, overlayBuffer_ = 0;

@@ -51,6 +51,42 @@ void main() {
 }
 )";
 
+const char* const kSurfaceVertex = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec3 colour;
+uniform mat4 view;
+uniform mat4 projection;
+out vec3 worldPosition;
+out vec3 eyeNormal;
+out vec3 surfaceColour;
+void main() {
+  worldPosition = position;
+  eyeNormal = mat3(view) * normal;  // the view turns and moves, never scales
+  surfaceColour = colour;
+  gl_Position = projection * view * vec4(position, 1.0);
+}
+)";
+
+const char* const kSurfaceFragment = R"(#version 330 core
+in vec3 worldPosition;
+in vec3 eyeNormal;
+in vec3 surfaceColour;
+uniform vec3 lightDirection;  // eye space, toward the light, unit length
+uniform vec4 cutPlane;        // world: xyz the normal toward the side kept, w its offset
+uniform bool cutaway;
+out vec4 fragColour;
+void main() {
+  if (cutaway && dot(cutPlane.xyz, worldPosition) < cutPlane.w) discard;
+  // The inside of a vessel shows through the cutaway and through tears: light both faces.
+  vec3 normal = normalize(gl_FrontFacing ? eyeNormal : -eyeNormal);
+  float diffuse = max(dot(normal, lightDirection), 0.0);
+  float specular = pow(max(dot(normal, normalize(lightDirection + vec3(0.0, 0.0, 1.0))), 0.0), 48.0);
+  float inside = gl_FrontFacing ? 1.0 : 0.6;  // the inner face a little darker
+  fragColour = vec4(inside * (surfaceColour * (0.28 + 0.72 * diffuse) + vec3(0.22 * specular)), 1.0);
+}
+)";
+
 const char* const kLineVertex = R"(#version 330 core
 layout(location = 0) in vec3 position;
 uniform mat4 viewProjection;

@@ -37,6 +37,9 @@ struct RenderOptions {
   std::string colour = "kind";  // kind, density, pressure, speed or surface
   // liquid or particles; empty: the scene's render.look, particles when colouring by a quantity
   std::string look;
+  // surfaces: objects drawn as their surfaces (DIR/object_surfaces.vtp) where the run has them;
+  // particles: as spheres
+  std::string objects = "surfaces";
   std::vector<double> range;  // {min, max}; empty: from the run's fluid
   int width = 1280;
   int height = 720;
@@ -67,7 +70,8 @@ struct ViewCommandOptions {
   int width = 1280;
   int height = 720;
   std::string colour = "kind";
-  std::string look;  // liquid or particles; empty: the scene's
+  std::string look;                  // liquid or particles; empty: the scene's
+  std::string objects = "surfaces";  // or particles
   bool noProbe = false;
   int frames = 0;  // close after this many displayed frames (0: when the window closes)
   std::string screenshot;

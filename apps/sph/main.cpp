@@ -75,6 +75,11 @@ int main(int argc, char** argv) {
                    "render.look, liquid unless set; particles with a --colour other than kind)")
       ->check(CLI::IsMember({"liquid", "particles"}));
   renderCmd
+      ->add_option("--objects", render.objects,
+                   "Objects drawn as their surfaces, deforming and opening where they tear, or "
+                   "as particles (default: surfaces)")
+      ->check(CLI::IsMember({"surfaces", "particles"}));
+  renderCmd
       ->add_option("--range", render.range,
                    "MIN,MAX of the colour map (default: the fluid's 2nd-98th percentile)")
       ->delimiter(',')
@@ -141,6 +146,11 @@ int main(int argc, char** argv) {
                    "The fluid as a liquid surface or as particles (default: the scene's "
                    "render.look, liquid unless set; particles with a --colour other than kind)")
       ->check(CLI::IsMember({"liquid", "particles"}));
+  viewCmd
+      ->add_option("--objects", view.objects,
+                   "Objects drawn as their surfaces, deforming and opening where they tear, or "
+                   "as particles (default: surfaces)")
+      ->check(CLI::IsMember({"surfaces", "particles"}));
   viewCmd->add_flag("--no-probe", view.noProbe, "No sphere for the mouse to drag");
   viewCmd->add_option("--frames", view.frames, "Close after this many displayed frames")
       ->check(CLI::NonNegativeNumber);

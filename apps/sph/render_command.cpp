@@ -18,6 +18,7 @@
 #include "render_run_info.hpp"
 #include "sph/error.hpp"
 #include "sph/io/frame_reader.hpp"
+#include "sph/io/object_surface_file.hpp"
 #include "video.hpp"
 
 namespace sph::cli {
@@ -150,6 +151,7 @@ Scene prepareScene(const RenderOptions& options, const io::RunFrameFiles& files,
   settings.domain = info.domain.value_or(particles);
   settings.showGrid = options.grid;
   settings.cutaway = options.cutaway;
+  settings.objectSurfaces = options.objects == "surfaces";
   settings.showDomain = options.grid;
   settings.gridCellSize = info.supportRadius.value_or(4.0f * settings.particleRadius);
   // Framed on the particles (and the domain when its grid is shown), not on the domain alone: a
@@ -218,6 +220,8 @@ int renderCommand(const RenderOptions& options) {
 
   render::OffscreenContext context(options.width, options.height);
   render::ParticleRenderer renderer;
+  if (scene.settings.objectSurfaces && !files.objectSurfaces.empty())
+    renderer.setObjectSurfaces(io::readObjectSurfaces(files.objectSurfaces));
   if (!options.quiet) printPlan(options, files, scene, context);
   const fs::path images = dir / "images";
   clearImages(images);

@@ -181,6 +181,7 @@ int runCommand(const RunOptions& options) {
   try {
     if (!resumed) {
       output.writeBoundary(sim.boundaryFrame());
+      output.writeObjectSurfaces(sim.objectSurfaces());
       writeFrame();
     }
     for (int frame = firstFrame; sim.time() < endTime; ++frame) {

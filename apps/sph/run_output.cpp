@@ -7,6 +7,7 @@
 
 #include "sph/error.hpp"
 #include "sph/io/frame_writer.hpp"
+#include "sph/io/object_surface_file.hpp"
 #include "sph/threads.hpp"
 
 namespace sph::cli {
@@ -17,8 +18,9 @@ namespace {
 
 // The files a run writes; --force removes these, the temporaries of a run killed while writing
 // them, and nothing else.
-const char* const kRunFiles[] = {"frames",       "frames.pvd",   "stats.csv",    "probes.csv",
-                                 "summary.json", "boundary.vtp", "boundary.ply", "boundary.csv",
+const char* const kRunFiles[] = {"frames",       "frames.pvd",   "stats.csv",
+                                 "probes.csv",   "summary.json", "boundary.vtp",
+                                 "boundary.ply", "boundary.csv", "object_surfaces.vtp",
                                  "images",       "video.mp4",    "checkpoints"};
 
 // A file and what a run killed while writing it left: "<name>.tmp" (io/frame_writer.hpp).
@@ -110,6 +112,11 @@ RunPosition RunOutput::position() {
 void RunOutput::writeBoundary(const ParticleFrame& walls) {
   if (format_ == FrameFormat::None || walls.size() == 0) return;
   io::writeFrame(walls, format_, dir_ / (std::string("boundary.") + io::frameExtension(format_)));
+}
+
+void RunOutput::writeObjectSurfaces(const std::vector<ObjectSurfaceMesh>& surfaces) {
+  if (format_ == FrameFormat::None || surfaces.empty()) return;
+  io::writeObjectSurfaces(surfaces, dir_ / "object_surfaces.vtp");
 }
 
 RunOutput::~RunOutput() {

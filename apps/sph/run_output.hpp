@@ -15,10 +15,11 @@
 #include <vector>
 
 #include "checkpoint.hpp"
+#include "sph/frame.hpp"
 #include "sph/io/probes_writer.hpp"
 #include "sph/io/pvd_series.hpp"
 #include "sph/io/stats_writer.hpp"
-#include "sph/frame.hpp"
+#include "sph/object_surface.hpp"
 #include "sph/scene.hpp"
 #include "sph/simulation.hpp"
 #include "sph/stats.hpp"
@@ -42,6 +43,8 @@ class RunOutput {
 
   // Frames hold the fluid; the static walls go once into DIR/boundary.EXT.
   void writeBoundary(const ParticleFrame& walls);
+  // The objects' drawn surfaces go once into DIR/object_surfaces.vtp, for sph render.
+  void writeObjectSurfaces(const std::vector<ObjectSurfaceMesh>& surfaces);
   // Queues the frame; a thread of its own assembles and writes the frames in order while the
   // simulation goes on. Throws the error of an earlier frame's writing, if any.
   void writeFrame(FrameCapture capture, double wallMsPerStep);

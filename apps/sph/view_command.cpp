@@ -21,6 +21,7 @@ int viewCommand(const ViewCommandOptions& options) {
   view.height = options.height;
   view.colour = options.colour;
   view.look = options.look;
+  view.objectSurfaces = options.objects != "particles";
   view.probe = !options.noProbe;
   view.frames = options.frames;
   view.screenshot = options.screenshot;

@@ -99,6 +99,8 @@ void drawSettings(ViewerState& state, const render::ValueRange& range) {
   ImGui::Checkbox("walls (b)", &d.show.boundary);
   ImGui::SameLine();
   ImGui::Checkbox("objects (o)", &d.show.objects);
+  ImGui::SameLine();
+  ImGui::Checkbox("as surfaces (m)", &d.objectSurfaces);
   ImGui::Checkbox("cut away (x)", &d.cutaway);
   ImGui::SameLine();
   ImGui::Checkbox("grid (g)", &d.showGrid);

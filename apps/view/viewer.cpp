@@ -117,6 +117,7 @@ void handleKeys(ViewerState& state) {
     d.colour = render::ColourMode((int(d.colour) + 1) % 5);
   if (ImGui::IsKeyPressed(GLFW_KEY_L, false))
     d.look = d.look == render::Look::Liquid ? render::Look::Particles : render::Look::Liquid;
+  if (ImGui::IsKeyPressed(GLFW_KEY_M, false)) d.objectSurfaces = !d.objectSurfaces;
 }
 
 // A kinematic object held by ctrl + left drag: the point of it the cursor took hold of moves
@@ -266,6 +267,7 @@ void runViewer(const Scene& original, const ViewOptions& options) {
   ImGuiSession imgui(window);
   render::ParticleRenderer renderer;
   FluidFeed feed(renderer, *sim);
+  renderer.setObjectSurfaces(sim->objectSurfaces());
 
   ViewerState state;
   state.fluidPath = feed.path();
@@ -273,6 +275,7 @@ void runViewer(const Scene& original, const ViewOptions& options) {
   state.draw.colour = *mode;
   state.draw.look =
       render::chooseLook(options.look, scene.render.look == FluidLook::Particles, *mode);
+  state.draw.objectSurfaces = options.objectSurfaces;
   state.draw.liquid.colour = rgbOf(scene.render.colour);
   state.draw.liquid.absorption = rgbOf(scene.render.absorption);
   // The scene's own first kinematic object (the artery's clamp) is watched from the start.

@@ -16,7 +16,8 @@ struct ViewOptions {
   std::string colour = "kind";  // kind, density, pressure, speed or surface
   // liquid or particles; empty: the scene's render.look, particles when colouring by a quantity
   std::string look;
-  bool probe = true;  // a kinematic sphere the mouse drags through the fluid
+  bool objectSurfaces = true;  // objects drawn as their surfaces; false: as particles
+  bool probe = true;           // a kinematic sphere the mouse drags through the fluid
   // For scripts and tests: close after this many display frames (0: when the window closes),
   // writing the last one to `screenshot` (a PNG) when given.
   int frames = 0;

@@ -24,6 +24,9 @@ struct ParticleFrame {
   // positions, over the last step's neighbours) and object particles on their object's
   // surface.
   std::vector<std::uint8_t> surface;
+  // 1 for object particles one of whose springs has broken (a deformable's tear or cut). Empty
+  // in frames that carry no tears (made by hand, or read from PLY or CSV): read as 0.
+  std::vector<std::uint8_t> torn;
 
   std::size_t size() const { return id.size(); }
 };

@@ -17,6 +17,7 @@
 #include "sph/frame.hpp"
 #include "sph/live_parameters.hpp"
 #include "sph/object_exchange.hpp"
+#include "sph/object_surface.hpp"
 #include "sph/scene.hpp"
 #include "sph/simulation_options.hpp"
 #include "sph/stats.hpp"
@@ -154,6 +155,9 @@ class Simulation {
   FluidView fluidView() const;
   // The static wall particles alone (they never move: runs write them once).
   ParticleFrame boundaryFrame() const;
+  // The surfaces the built-in objects are drawn with (sph/object_surface.hpp), anchored on the
+  // particle ids of the frames; none for an attached engine's objects.
+  std::vector<ObjectSurfaceMesh> objectSurfaces() const;
   // The walls (if asked) and the objects, without the fluid: what a renderer draws beside a
   // fluid it takes through writeFluidForDrawing.
   ParticleFrame solidFrame(bool includeBoundary) const;

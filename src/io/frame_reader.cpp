@@ -15,9 +15,7 @@ namespace sph::io {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string readBytes(const fs::path& file) {
+std::string readFileBytes(const fs::path& file) {
   // A pipe would block the read forever, and a device (/dev/zero) never ends.
   std::error_code error;
   if (fs::exists(file, error) && !fs::is_regular_file(file, error))
@@ -37,6 +35,8 @@ std::string readBytes(const fs::path& file) {
   if (in.bad()) throw InputError(file.string() + ": read error");
   return bytes.str();
 }
+
+namespace {
 
 bool isFrameExtension(const std::string& ext) {
   return ext == ".vtp" || ext == ".ply" || ext == ".csv";
@@ -61,7 +61,7 @@ ParticleFrame readFrame(const fs::path& file) {
   const std::string ext = file.extension().string();
   if (!isFrameExtension(ext))
     throwBadFrame(file, "unknown frame format '" + ext + "', expected .vtp, .ply or .csv");
-  const std::string bytes = readBytes(file);
+  const std::string bytes = readFileBytes(file);
   if (ext == ".vtp") return readVtp(bytes, file);
   if (ext == ".ply") return readPly(bytes, file);
   return readCsvFrame(bytes, file);
@@ -79,7 +79,7 @@ RunFrameFiles framesOfSeries(const fs::path& dir, const fs::path& pvd) {
                      " bytes; a collection over 256 MiB is refused");
   RunFrameFiles files;
   std::string extension;
-  for (const auto& [time, relative] : readPvd(readBytes(pvd), pvd)) {
+  for (const auto& [time, relative] : readPvd(readFileBytes(pvd), pvd)) {
     const fs::path frame = dir / relative;
     const std::string ext = frame.extension().string();
     if (!isFrameExtension(ext))
@@ -95,6 +95,8 @@ RunFrameFiles framesOfSeries(const fs::path& dir, const fs::path& pvd) {
   }
   const fs::path boundary = dir / ("boundary" + extension);
   if (fs::is_regular_file(boundary, error)) files.boundary = boundary;
+  if (fs::is_regular_file(dir / "object_surfaces.vtp", error))
+    files.objectSurfaces = dir / "object_surfaces.vtp";
   return files;
 }
 
@@ -133,6 +135,8 @@ RunFrameFiles listRunFrames(const fs::path& dir) {
   for (auto& [number, path] : numbered) files.frames.push_back(std::move(path));
   const fs::path boundary = dir / ("boundary" + extension);
   if (fs::is_regular_file(boundary, error)) files.boundary = boundary;
+  if (fs::is_regular_file(dir / "object_surfaces.vtp", error))
+    files.objectSurfaces = dir / "object_surfaces.vtp";
   return files;
 }
 

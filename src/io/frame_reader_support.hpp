@@ -14,6 +14,10 @@ namespace sph::io {
   throw InputError(file.string() + ": " + what);
 }
 
+// The whole file; throws InputError naming it when it is not a regular file, is over 4 GiB or
+// cannot be read.
+std::string readFileBytes(const std::filesystem::path& file);
+
 // Sizes every array for `n` particles; surface flags start at 0 for files that lack them.
 inline void resizeFrame(ParticleFrame& frame, std::size_t n) {
   frame.id.resize(n);

@@ -63,6 +63,13 @@ inline Vec3 toF(DVec3 v) {
   return Vec3{float(v.x), float(v.y), float(v.z)};
 }
 
+// Two unit vectors completing the unit `axis` to a right-handed orthonormal frame (u, v, axis).
+inline void perpendicularFrame(DVec3 axis, DVec3& u, DVec3& v) {
+  const DVec3 helper = std::abs(axis.x) < 0.9 ? DVec3{1, 0, 0} : DVec3{0, 1, 0};
+  u = normalized(cross(axis, helper));
+  v = cross(axis, u);
+}
+
 // Row-major 3×3 matrix.
 struct Mat3 {
   double m[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};

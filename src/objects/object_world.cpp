@@ -95,6 +95,7 @@ struct ObjectWorld::Impl {
     ObjectMotion motion = ObjectMotion::Rigid;
     std::size_t first = 0, count = 0;
     BuiltShape shape;
+    DrawnSurface drawn;    // anchors: particle indices of the world
     std::size_t body = 0;  // index into rigid, networks or paths, by motion
     DVec3 initialCentre;   // centre of mass at the start
   };
@@ -194,6 +195,9 @@ void ObjectWorld::Impl::addObject(const ObjectDesc& desc, std::size_t index) {
   const ShapeSamples samples =
       sampleShape(desc.shape, spacing, inset, where, settings.sceneFolder, object.shape);
   object.count = samples.position.size();
+  object.drawn = objects::drawnSurface(desc.shape, samples, object.shape, spacing);
+  for (auto& anchor : object.drawn.anchor)
+    for (std::uint32_t& k : anchor) k += std::uint32_t(object.first);
 
   // Each particle stands for a cube of edge `spacing`, a surface layer being `spacing` thick;
   // but a rigid body sampled on its surface is a solid body: its particles share the mass of
@@ -603,6 +607,10 @@ const PeriodicSpace& ObjectWorld::periodicSpace() const {
 
 Vec3 ObjectWorld::contactForce(std::size_t object) const {
   return toF(impl_->contactForce.at(object));
+}
+
+const DrawnSurface& ObjectWorld::drawnSurface(std::size_t object) const {
+  return impl_->objects.at(object).drawn;
 }
 
 ObjectInfo ObjectWorld::info(std::size_t object) const {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "objects/drawn_surface.hpp"
 #include "objects/periodic_space.hpp"
 #include "sph/core/contact.hpp"
 #include "sph/core/vec.hpp"
@@ -105,6 +106,8 @@ class ObjectWorld {
   std::size_t objectCount() const;
   const ParticleState& particles() const;
   ObjectInfo info(std::size_t object) const;
+  // The object's surface for drawing, its anchors indices into particles().
+  const DrawnSurface& drawnSurface(std::size_t object) const;
   // ObjectInfo::contactForce alone, without summing the object's particles.
   Vec3 contactForce(std::size_t object) const;
   double time() const;

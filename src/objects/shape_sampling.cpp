@@ -29,13 +29,6 @@ int roundCount(double v) {
   return int(std::lround(v));
 }
 
-// Two unit vectors completing `axis` to a right-handed orthonormal frame (u, v, axis).
-void perpendicularFrame(DVec3 axis, DVec3& u, DVec3& v) {
-  const DVec3 helper = std::abs(axis.x) < 0.9 ? DVec3{1, 0, 0} : DVec3{0, 1, 0};
-  u = normalized(cross(axis, helper));
-  v = cross(axis, u);
-}
-
 struct Sink {
   ShapeSamples& out;
   void add(DVec3 p, DVec3 n, bool surface) {
@@ -180,25 +173,40 @@ void sampleTube(const ShapeDesc& shape, double s, int layers, Sink& sink) {
     }
     const int rings = roundCount(2.0 * h / s) + 1;
     const int around = ringCount(r, s);
+    // The outer layer's rings, in order over the surface: the wall's, then each disc's.
+    std::vector<SampleRing> wall, discs[2];
+    const auto record = [&](std::vector<SampleRing>& to, int count, double phase) {
+      if (k == 0 && !shape.solid) to.push_back({sink.out.position.size(), count, phase});
+    };
     for (int j = 0; j < rings; ++j) {
       const double t = rings > 1 ? -h + 2.0 * h * j / (rings - 1) : 0.0;
       const bool end = j == 0 || j == rings - 1;
       DVec3 axial{0, 0, 0};
       if (closedLayers && end) axial = axis * (j == 0 ? -1.0 : 1.0);
+      record(wall, around, 0.5 * (j % 2));
       addRing(sink, c, axis, u, v, t, r, around, 0.5 * (j % 2), 1.0, axial,
               k == 0 || (shape.solid && end));
     }
-    if (!closedLayers) continue;
-    const int discRings = std::max(1, roundCount(r / s));
-    for (int end = -1; end <= 1; end += 2) {
-      const double t = end * h;
-      const DVec3 n = axis * end;
-      for (int j = 1; j < discRings; ++j) {
-        const double rho = r * (1.0 - double(j) / discRings);
-        addRing(sink, c, axis, u, v, t, rho, ringCount(rho, s), 0.5 * (j % 2), 0.0, n, k == 0);
+    if (closedLayers) {
+      const int discRings = std::max(1, roundCount(r / s));
+      for (int end = -1; end <= 1; end += 2) {
+        const double t = end * h;
+        const DVec3 n = axis * end;
+        for (int j = 1; j < discRings; ++j) {
+          const double rho = r * (1.0 - double(j) / discRings);
+          record(discs[(end + 1) / 2], ringCount(rho, s), 0.5 * (j % 2));
+          addRing(sink, c, axis, u, v, t, rho, ringCount(rho, s), 0.5 * (j % 2), 0.0, n, k == 0);
+        }
+        record(discs[(end + 1) / 2], 1, 0.0);
+        sink.add(c + axis * t, n, k == 0);
       }
-      sink.add(c + axis * t, n, k == 0);
     }
+    if (k != 0 || shape.solid) continue;
+    // Centre of the first disc outwards, the wall, then the second disc inwards.
+    std::vector<SampleRing>& rings0 = sink.out.outerRings;
+    rings0.assign(discs[0].rbegin(), discs[0].rend());
+    rings0.insert(rings0.end(), wall.begin(), wall.end());
+    rings0.insert(rings0.end(), discs[1].begin(), discs[1].end());
   }
 }
 

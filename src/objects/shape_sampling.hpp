@@ -13,10 +13,21 @@
 
 namespace sph::objects {
 
+// A ring of consecutive samples around an axis: sample first + i at angle 2π (i + phase) / count
+// in the shape's own frame. One sample is a ring's degenerate case, the centre of a disc.
+struct SampleRing {
+  std::size_t first = 0;
+  int count = 0;
+  double phase = 0.0;
+};
+
 struct ShapeSamples {
   std::vector<DVec3> position;  // m, world frame at the initial pose
   std::vector<DVec3> normal;    // outward unit normal of the nearest surface
   std::vector<std::uint8_t> surface;
+  // A hollow tube's outer layer as rings in order along its surface (from one end's centre over
+  // the disc, along the wall, over the other disc when capped): the surface drawn through them.
+  std::vector<SampleRing> outerRings;
 };
 
 // What interiorContains needs of the initial shape.

@@ -34,9 +34,10 @@ struct FrameBuilder {
     out.kind.reserve(n);
     out.object.reserve(n);
     out.surface.reserve(n);
+    out.torn.reserve(n);
   }
   void push(std::uint32_t id, Vec4 x, Vec4 v, float rho, float p, ParticleKind kind,
-            std::int32_t object = -1, bool surface = false) {
+            std::int32_t object = -1, bool surface = false, bool torn = false) {
     out.id.push_back(id);
     out.position.insert(out.position.end(), {x.x, x.y, x.z});
     out.velocity.insert(out.velocity.end(), {v.x, v.y, v.z});
@@ -45,6 +46,7 @@ struct FrameBuilder {
     out.kind.push_back(static_cast<std::uint8_t>(kind));
     out.object.push_back(object);
     out.surface.push_back(surface ? 1 : 0);
+    out.torn.push_back(torn ? 1 : 0);
   }
 };
 
@@ -79,7 +81,7 @@ void appendObjects(FrameBuilder& b, const objects::ParticleState& p, std::uint64
   for (std::size_t k = 0; k < p.size(); ++k) {
     b.push(static_cast<std::uint32_t>(firstId + k), makeVec4(p.position[k]),
            makeVec4(p.velocity[k]), restDensity, 0.0f, ParticleKind::Object, p.object[k],
-           p.surface[k] != 0);
+           p.surface[k] != 0, p.cut[k] != 0);
   }
 }
 

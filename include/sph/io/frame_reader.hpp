@@ -28,6 +28,7 @@ struct RunFrameFiles {
   std::vector<std::filesystem::path> frames;
   std::vector<double> times;  // s, from frames.pvd; empty without it
   std::filesystem::path boundary;
+  std::filesystem::path objectSurfaces;  // DIR/object_surfaces.vtp; empty when absent
 };
 
 // Throws InputError when `dir` holds no frames, or frames of more than one format, or a
