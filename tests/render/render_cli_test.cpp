@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -133,6 +134,35 @@ TEST_F(RenderCli, ShowsWallsAndGridWithoutVideo) {
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(pngSize(run / "images" / "frame_00000.png"), std::make_pair(64, 48));
   EXPECT_FALSE(fs::exists(run / "video.mp4"));
+}
+
+std::string readAll(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The run writes its objects' surfaces once; the renderer draws the cube as its surface unless
+// asked for particles, and a damaged surfaces file is bad input naming it.
+TEST_F(RenderCli, ObjectsAreDrawnAsTheirSurfaces) {
+  const fs::path run = dir_ / "run";
+  ASSERT_EQ(runSph("run " + scene_.string() + " --out " + run.string() + " --quiet").code, 0);
+  ASSERT_TRUE(fs::exists(run / "object_surfaces.vtp"));
+  Result r = runSph("render " + run.string() + " --width 64 --height 48 --no-video --quiet");
+  if (noOffscreenContext(r)) GTEST_SKIP() << r.output;
+  ASSERT_EQ(r.code, 0) << r.output;
+  const std::string surface = readAll(run / "images" / "frame_00002.png");
+  r = runSph("render " + run.string() +
+             " --width 64 --height 48 --no-video --quiet --objects particles");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(readAll(run / "images" / "frame_00002.png"), surface);
+  EXPECT_EQ(runSph("render " + run.string() + " --objects cubes").code, 2);
+
+  std::ofstream(run / "object_surfaces.vtp", std::ios::trunc) << "<?xml version";
+  r = runSph("render " + run.string() + " --no-video --quiet");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("object_surfaces.vtp"), std::string::npos) << r.output;
+  // Particles need no surfaces.
+  EXPECT_EQ(runSph("render " + run.string() + " --no-video --quiet --objects particles").code, 0);
 }
 
 TEST_F(RenderCli, BadInputExitsTwoNamingIt) {
