@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,8 +57,10 @@ struct RenderOptions {
 struct SurfaceOptions {
   std::string dir;
   std::string format = "vtp";  // vtp, obj or ply
-  double voxel = 0.6;          // the level set's voxel, in spacings
-  int smoothing = 3;           // mean-curvature passes
+  // The level set's voxel in spacings and its mean-curvature passes; none: the surface
+  // library's defaults (surface::SurfaceSettings).
+  std::optional<double> voxel;
+  std::optional<int> smoothing;
   bool quiet = false;
 };
 

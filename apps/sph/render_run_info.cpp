@@ -2,9 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <string>
 
+#include "run_summary.hpp"
 #include "sph/error.hpp"
 
 namespace sph::cli {
@@ -12,17 +12,6 @@ namespace sph::cli {
 namespace {
 
 using nlohmann::json;
-
-std::optional<double> number(const json& summary, const char* pointer,
-                             const std::filesystem::path& file) {
-  const json::json_pointer at(pointer);
-  if (!summary.contains(at) || summary.at(at).is_null()) return std::nullopt;
-  const json& value = summary.at(at);
-  if (!value.is_number())
-    throw InputError(file.string() + ": key '" + std::string(pointer).substr(1) +
-                     "' is not a number");
-  return value.get<double>();
-}
 
 std::optional<render::Vec3f> point(const json& summary, const char* pointer,
                                    const std::filesystem::path& file) {
@@ -41,21 +30,15 @@ std::optional<render::Vec3f> point(const json& summary, const char* pointer,
 RenderRunInfo readRenderRunInfo(const std::filesystem::path& dir) {
   const std::filesystem::path file = dir / "summary.json";
   RenderRunInfo info;
-  std::ifstream in(file);
-  if (!in) return info;
-  json summary;
-  try {
-    summary = json::parse(in);
-  } catch (const json::exception& e) {
-    throw InputError(file.string() + ": not valid JSON: " + e.what());
-  }
-  if (!summary.is_object()) throw InputError(file.string() + ": expected a JSON object");
-  info.fps = number(summary, "/scene/output/fps", file);
+  const std::optional<json> read = readRunSummary(dir);
+  if (!read) return info;
+  const json& summary = *read;
+  info.fps = summaryNumber(summary, "/scene/output/fps", file);
   if (info.fps && !(*info.fps > 0))
     throw InputError(file.string() + ": key 'scene/output/fps' must be positive");
-  if (const auto spacing = number(summary, "/scene/fluid/spacing", file)) {
+  if (const auto spacing = summaryNumber(summary, "/scene/fluid/spacing", file)) {
     info.spacing = static_cast<float>(*spacing);
-    const double ratio = number(summary, "/scene/fluid/support_ratio", file).value_or(2.0);
+    const double ratio = summaryNumber(summary, "/scene/fluid/support_ratio", file).value_or(2.0);
     info.supportRadius = static_cast<float>(*spacing * ratio);
   }
   const auto min = point(summary, "/scene/domain/min", file);

@@ -8,14 +8,15 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
 #include "mesh_files.hpp"
 #include "particle_surface.hpp"
+#include "run_summary.hpp"
 #include "sph/error.hpp"
 #include "sph/io/frame_reader.hpp"
 #include "sph/io/pvd_series.hpp"
@@ -29,20 +30,14 @@ namespace {
 // The fluid's spacing, from the run's summary.json (its resolved scene).
 double runSpacing(const fs::path& dir) {
   const fs::path file = dir / "summary.json";
-  std::ifstream in(file);
-  if (!in)
+  const std::optional<nlohmann::json> summary = readRunSummary(dir);
+  if (!summary)
     throw InputError(file.string() +
                      ": not found: the fluid's spacing sizes the surface's level set");
-  nlohmann::json summary;
-  try {
-    summary = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(file.string() + ": not valid JSON: " + e.what());
-  }
-  const nlohmann::json::json_pointer at("/scene/fluid/spacing");
-  if (!summary.contains(at) || !summary.at(at).is_number() || !(summary.at(at).get<double>() > 0))
+  const std::optional<double> spacing = summaryNumber(*summary, "/scene/fluid/spacing", file);
+  if (!spacing || !(*spacing > 0))
     throw InputError(file.string() + ": key 'scene/fluid/spacing': expected a positive number");
-  return summary.at(at).get<double>();
+  return *spacing;
 }
 
 surface::MeshFormat formatOf(const std::string& name) {
@@ -80,8 +75,8 @@ int surfaceCommand(const SurfaceOptions& options) {
   const io::RunFrameFiles files = io::listRunFrames(dir);
   surface::SurfaceSettings settings;
   settings.spacing = runSpacing(dir);
-  settings.voxel = options.voxel;
-  settings.smoothing = options.smoothing;
+  if (options.voxel) settings.voxel = *options.voxel;
+  if (options.smoothing) settings.smoothing = *options.smoothing;
   const surface::MeshFormat format = formatOf(options.format);
   const fs::path folder = dir / "surface";
   clearSurfaces(folder);

@@ -16,6 +16,9 @@
 // force as above and no pressure term.
 #pragma once
 
+#include <stdexcept>
+#include <string>
+
 #include "fluid/kernel_dispatch.hpp"
 #include "fluid/neighbors.hpp"
 #include "fluid/pair_terms.hpp"
@@ -111,7 +114,13 @@ void addBoundaryForces(const fluid::FluidParticles<B>& fluid, const fluid::Grid<
                        const fluid::BoundaryParticles<B>& boundary, ObjectParticles<B>& objects,
                        const fluid::FluidParameters& params, bool positionSolver = false) {
   if (boundary.count == 0 || fluid.count == 0) return;
-  if (positionSolver && fluid.objectNeighborCount.size() != boundary.count) return;
+  // The position solver lists each object particle's fluid as it solves; a step that reached
+  // here without those lists, or with another boundary's, is a bug in the stage order.
+  if (positionSolver && fluid.objectNeighborCount.size() != boundary.count)
+    throw std::logic_error("addBoundaryForces: the position solver listed the fluid near " +
+                           std::to_string(fluid.objectNeighborCount.size()) +
+                           " object particles, the boundary holds " +
+                           std::to_string(boundary.count));
   const bool artificial = params.viscosityModel == ViscosityModel::Artificial;
   fluid::withKernels(params, [&](auto kernels) {
     if (artificial && !positionSolver)
