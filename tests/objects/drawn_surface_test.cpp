@@ -13,6 +13,7 @@
 
 #include "drawn_surface_frames.hpp"
 #include "object_scenes.hpp"
+#include "objects/axis_box.hpp"
 #include "objects/object_world.hpp"
 #include "sph/core/constants.hpp"
 #include "sph/object_surface.hpp"
@@ -180,23 +181,6 @@ TEST(DrawnSurface, ARigidMotionCarriesTheSurfaceRigidly) {
   }
 }
 
-// Whether the segment ab passes through the box (slab clipping).
-bool segmentMeets(const AxisBox& box, const float* a, const float* b) {
-  double t0 = 0.0, t1 = 1.0;
-  for (int c = 0; c < 3; ++c) {
-    const double d = b[c] - a[c];
-    if (std::abs(d) < 1e-15) {
-      if (a[c] < box.min[c] || a[c] > box.max[c]) return false;
-      continue;
-    }
-    double lo = (box.min[c] - a[c]) / d, hi = (box.max[c] - a[c]) / d;
-    if (lo > hi) std::swap(lo, hi);
-    t0 = std::max(t0, lo);
-    t1 = std::min(t1, hi);
-  }
-  return t0 <= t1;
-}
-
 // The slit of a cut is a hole in the surface: every triangle across it is open, and the open
 // ones keep to the cut's neighbourhood.
 TEST(DrawnSurface, ACutOpensTheSurfaceAlongIt) {
@@ -217,7 +201,7 @@ TEST(DrawnSurface, ACutOpensTheSurfaceAlongIt) {
     bool crosses = false;
     for (int c = 0; c < 3; ++c) {
       const Vec3 a = p.position[s.anchor[tri[c]][0]], b = p.position[s.anchor[tri[(c + 1) % 3]][0]];
-      crosses = crosses || segmentMeets(cut, &a.x, &b.x);
+      crosses = crosses || segmentMeetsBox(cut, toD(a), toD(b));
     }
     across += crosses;
     if (crosses) {

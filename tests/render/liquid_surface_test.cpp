@@ -8,13 +8,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
-#include "camera.hpp"
 #include "liquid_surface.hpp"
-#include "offscreen_context.hpp"
-#include "particle_renderer.hpp"
+#include "offscreen_fixture.hpp"
 
 namespace sph::render {
 namespace {
@@ -47,15 +44,12 @@ float topOfBlock() {
   return kSpacing * float(kCells[1]);
 }
 
-class LiquidView : public testing::Test {
+class LiquidView : public test::OffscreenFixture {
  protected:
+  LiquidView() : OffscreenFixture(kWidth, kHeight) {}
   void SetUp() override {
-    try {
-      context_ = std::make_unique<OffscreenContext>(kWidth, kHeight);
-    } catch (const ContextUnavailable& e) {
-      GTEST_SKIP() << "no offscreen OpenGL context: " << e.what();
-    }
-    renderer_ = std::make_unique<ParticleRenderer>();
+    OffscreenFixture::SetUp();
+    if (IsSkipped()) return;
     // Looking down at the middle of the block's top, steeply, from the front.
     camera_.target = {0.3f, topOfBlock(), 0.3f};
     camera_.distance = 0.7f;
@@ -65,17 +59,6 @@ class LiquidView : public testing::Test {
     settings_.look = Look::Liquid;
     settings_.showColourBar = false;
     renderer_->setParticles(restingBlock());
-  }
-  void TearDown() override {
-    renderer_.reset();
-    context_.reset();
-  }
-
-  std::vector<std::uint8_t> draw() {
-    context_->bindForDrawing();
-    renderer_->draw(camera_, settings_, kWidth, kHeight);
-    context_->resolveForReading();
-    return readRgbPixels(kWidth, kHeight);
   }
 
   // The world point each pixel's smoothed depth stands for (rows from the bottom); y = NaN
@@ -131,11 +114,6 @@ class LiquidView : public testing::Test {
     });
     return steepest;
   }
-
-  std::unique_ptr<OffscreenContext> context_;
-  std::unique_ptr<ParticleRenderer> renderer_;
-  OrbitCamera camera_;
-  DrawSettings settings_;
 };
 
 TEST_F(LiquidView, TheTopOfARestingBlockIsFlatWithinHalfASpacing) {

@@ -3,21 +3,16 @@
 // the reason, where no offscreen context can be made.
 #include <gtest/gtest.h>
 
-#include <memory>
 #include <vector>
 
 #include "../objects/drawn_surface_frames.hpp"
 #include "../objects/object_scenes.hpp"
-#include "camera.hpp"
 #include "object_surfaces.hpp"
-#include "offscreen_context.hpp"
-#include "particle_renderer.hpp"
+#include "offscreen_fixture.hpp"
 
 namespace sph::render {
 namespace {
 
-constexpr int kWidth = 200;
-constexpr int kHeight = 150;
 constexpr double kSpacing = 0.001;
 constexpr double kRadius = 0.006;
 
@@ -31,15 +26,12 @@ objects::ObjectWorld vessel(bool slit) {
   return objects::ObjectWorld({d}, objects::test::settings());
 }
 
-class ObjectSurfaceRender : public testing::Test {
+class ObjectSurfaceRender : public test::OffscreenFixture {
  protected:
+  ObjectSurfaceRender() : OffscreenFixture(200, 150) {}
   void SetUp() override {
-    try {
-      context_ = std::make_unique<OffscreenContext>(kWidth, kHeight);
-    } catch (const ContextUnavailable& e) {
-      GTEST_SKIP() << "no offscreen OpenGL context: " << e.what();
-    }
-    renderer_ = std::make_unique<ParticleRenderer>();
+    OffscreenFixture::SetUp();
+    if (IsSkipped()) return;
     // Looking along -z at the vessel's side: x to the right, y up.
     camera_.target = {0.0f, 0.0f, 0.0f};
     camera_.distance = 0.045f;
@@ -48,34 +40,17 @@ class ObjectSurfaceRender : public testing::Test {
     settings_.particleRadius = float(0.5 * kSpacing);
     settings_.domain = {{-0.02f, -0.01f, -0.01f}, {0.02f, 0.01f, 0.01f}};
   }
-  void TearDown() override {
-    renderer_.reset();  // while its context is current
-    context_.reset();
-  }
 
   std::vector<std::uint8_t> render(const objects::ObjectWorld& world) {
     renderer_->setObjectSurfaces({objects::test::meshOf(world.drawnSurface(0))});
-    renderer_->setParticles(objects::test::frameOf(world.particles()));
-    context_->bindForDrawing();
-    renderer_->draw(camera_, settings_, kWidth, kHeight);
-    context_->resolveForReading();
-    return readRgbPixels(kWidth, kHeight);
+    return OffscreenFixture::render(objects::test::frameOf(world.particles()));
   }
 
   // The brightness (sum of channels) where the world point p appears.
   int brightnessAt(const std::vector<std::uint8_t>& rgb, const Vec3f& p) const {
-    const auto clip =
-        transformPoint(multiply(camera_.projection(float(kWidth) / kHeight), camera_.view()), p);
-    const int x = static_cast<int>((clip[0] / clip[3] * 0.5f + 0.5f) * kWidth);
-    const int y = static_cast<int>((0.5f - clip[1] / clip[3] * 0.5f) * kHeight);
-    const std::size_t at = 3 * (static_cast<std::size_t>(y) * kWidth + x);
+    const std::size_t at = pixelIndex(p);
     return rgb[at] + rgb[at + 1] + rgb[at + 2];
   }
-
-  std::unique_ptr<OffscreenContext> context_;
-  std::unique_ptr<ParticleRenderer> renderer_;
-  OrbitCamera camera_;
-  DrawSettings settings_;
 };
 
 const Vec3f kOnSlit{0.0f, 0.0f, float(kRadius)};        // the middle of the cut, facing us

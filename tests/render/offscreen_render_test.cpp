@@ -4,16 +4,13 @@
 
 #include <cstdint>
 #include <cstdlib>
-#include <memory>
 #include <stdexcept>
 #include <vector>
 
 #include <epoxy/gl.h>
 
-#include "camera.hpp"
-#include "offscreen_context.hpp"
+#include "offscreen_fixture.hpp"
 #include "particle_colours.hpp"
-#include "particle_renderer.hpp"
 
 namespace sph::render {
 namespace {
@@ -25,15 +22,12 @@ struct Pixel {
   int r, g, b;
 };
 
-class OffscreenRender : public testing::Test {
+class OffscreenRender : public test::OffscreenFixture {
  protected:
+  OffscreenRender() : OffscreenFixture(kWidth, kHeight) {}
   void SetUp() override {
-    try {
-      context_ = std::make_unique<OffscreenContext>(kWidth, kHeight);
-    } catch (const ContextUnavailable& e) {
-      GTEST_SKIP() << "no offscreen OpenGL context: " << e.what();
-    }
-    renderer_ = std::make_unique<ParticleRenderer>();
+    OffscreenFixture::SetUp();
+    if (IsSkipped()) return;
     // Looking along -z at the unit cube: x to the right, y up.
     camera_.target = {0.5f, 0.5f, 0.5f};
     camera_.distance = 2.6f;
@@ -42,26 +36,10 @@ class OffscreenRender : public testing::Test {
     settings_.particleRadius = 0.03f;
     settings_.domain = {{0, 0, 0}, {1, 1, 1}};
   }
-  void TearDown() override {
-    renderer_.reset();  // while its context is current
-    context_.reset();
-  }
 
-  std::vector<std::uint8_t> render(const ParticleFrame& frame) {
-    renderer_->setParticles(frame);
-    context_->bindForDrawing();
-    renderer_->draw(camera_, settings_, kWidth, kHeight);
-    context_->resolveForReading();
-    return readRgbPixels(kWidth, kHeight);
-  }
-
-  // The pixel where the world point p appears (image rows from the top).
+  // The pixel where the world point p appears.
   Pixel pixelAt(const std::vector<std::uint8_t>& rgb, const Vec3f& p) const {
-    const auto clip =
-        transformPoint(multiply(camera_.projection(float(kWidth) / kHeight), camera_.view()), p);
-    const int x = static_cast<int>((clip[0] / clip[3] * 0.5f + 0.5f) * kWidth);
-    const int y = static_cast<int>((0.5f - clip[1] / clip[3] * 0.5f) * kHeight);
-    const std::size_t at = 3 * (static_cast<std::size_t>(y) * kWidth + x);
+    const std::size_t at = pixelIndex(p);
     return {rgb[at], rgb[at + 1], rgb[at + 2]};
   }
 
@@ -69,11 +47,6 @@ class OffscreenRender : public testing::Test {
     const Rgb& b = settings_.background;
     return p.r == toByte(b.r) && p.g == toByte(b.g) && p.b == toByte(b.b);
   }
-
-  std::unique_ptr<OffscreenContext> context_;
-  std::unique_ptr<ParticleRenderer> renderer_;
-  OrbitCamera camera_;
-  DrawSettings settings_;
 };
 
 void addParticle(ParticleFrame& f, const Vec3f& p, ParticleKind kind, int object) {
@@ -211,10 +184,7 @@ TEST_F(OffscreenRender, FluidWrittenIntoTheBuffersDrawsAsTheHostPath) {
   glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(rgba.size()), rgba.data());
   renderer_->setParticlesBehindFluid(fluid, *settings_.range, solids);
   EXPECT_EQ(renderer_->particleCount(), whole.size());
-  context_->bindForDrawing();
-  renderer_->draw(camera_, settings_, kWidth, kHeight);
-  context_->resolveForReading();
-  const std::vector<std::uint8_t> drawn = readRgbPixels(kWidth, kHeight);
+  const std::vector<std::uint8_t> drawn = draw();
 
   std::size_t covered = 0, differing = 0;
   for (std::size_t at = 0; at < drawn.size(); at += 3) {
