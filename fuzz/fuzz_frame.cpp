@@ -1,5 +1,5 @@
 // Any bytes as a frame of the format SPH_FUZZ_FILE names ("fuzz.vtp", "fuzz.ply", "fuzz.csv"),
-// or as a run's frames.pvd ("fuzz.pvd"), as sph render reads them back: a frame (or the frames
+// as a parallel frame's list of pieces ("fuzz.pvtp"), or as a run's frames.pvd ("fuzz.pvd"), as sph render reads them back: a frame (or the frames
 // listed) or an InputError naming the file.
 #include <cstddef>
 #include <cstdint>
@@ -8,6 +8,7 @@
 
 #include "sph/io/frame_reader.hpp"
 #include "io/pvd_reader.hpp"
+#include "io/pvtp_reader.hpp"
 #include "sph/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -20,6 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       sph::io::readPly(bytes, file);
     else if (file.extension() == ".pvd")
       sph::io::readPvd(bytes, file);
+    else if (file.extension() == ".pvtp")
+      sph::io::readPvtpPieces(bytes, file);
     else
       sph::io::readCsvFrame(bytes, file);
   } catch (const sph::InputError&) {

@@ -10,6 +10,7 @@
 
 #include "io/frame_reader_support.hpp"
 #include "io/pvd_reader.hpp"
+#include "io/pvtp_reader.hpp"
 
 namespace sph::io {
 
@@ -39,7 +40,13 @@ std::string readFileBytes(const fs::path& file) {
 namespace {
 
 bool isFrameExtension(const std::string& ext) {
-  return ext == ".vtp" || ext == ".ply" || ext == ".csv";
+  return ext == ".vtp" || ext == ".ply" || ext == ".csv" || ext == ".pvtp";
+}
+
+// The walls a run wrote once beside frames of `extension`: a distributed run's parallel frames
+// (.pvtp) have theirs in one piece (.vtp).
+std::filesystem::path boundaryFile(const fs::path& dir, const std::string& extension) {
+  return dir / (extension == ".pvtp" ? std::string("boundary.vtp") : "boundary" + extension);
 }
 
 // "frame_00012.vtp" → 12; -1 for any other name (temporaries, stray files, and numbers of more
@@ -60,9 +67,10 @@ long frameNumber(const fs::path& file) {
 ParticleFrame readFrame(const fs::path& file) {
   const std::string ext = file.extension().string();
   if (!isFrameExtension(ext))
-    throwBadFrame(file, "unknown frame format '" + ext + "', expected .vtp, .ply or .csv");
+    throwBadFrame(file, "unknown frame format '" + ext + "', expected .vtp, .pvtp, .ply or .csv");
   const std::string bytes = readFileBytes(file);
   if (ext == ".vtp") return readVtp(bytes, file);
+  if (ext == ".pvtp") return joinPvtpPieces(readPvtpPieces(bytes, file), file);
   if (ext == ".ply") return readPly(bytes, file);
   return readCsvFrame(bytes, file);
 }
@@ -83,7 +91,8 @@ RunFrameFiles framesOfSeries(const fs::path& dir, const fs::path& pvd) {
     const fs::path frame = dir / relative;
     const std::string ext = frame.extension().string();
     if (!isFrameExtension(ext))
-      throw InputError(pvd.string() + ": lists '" + relative + "', not a .vtp, .ply or .csv frame");
+      throw InputError(pvd.string() + ": lists '" + relative +
+                       "', not a .vtp, .pvtp, .ply or .csv frame");
     if (extension.empty()) extension = ext;
     if (ext != extension)
       throw InputError(pvd.string() + ": lists frames of two formats (" + extension + " and " +
@@ -93,7 +102,7 @@ RunFrameFiles framesOfSeries(const fs::path& dir, const fs::path& pvd) {
     files.frames.push_back(frame);
     files.times.push_back(time);
   }
-  const fs::path boundary = dir / ("boundary" + extension);
+  const fs::path boundary = boundaryFile(dir, extension);
   if (fs::is_regular_file(boundary, error)) files.boundary = boundary;
   if (fs::is_regular_file(dir / "object_surfaces.vtp", error))
     files.objectSurfaces = dir / "object_surfaces.vtp";
@@ -133,7 +142,7 @@ RunFrameFiles listRunFrames(const fs::path& dir) {
 
   RunFrameFiles files;
   for (auto& [number, path] : numbered) files.frames.push_back(std::move(path));
-  const fs::path boundary = dir / ("boundary" + extension);
+  const fs::path boundary = boundaryFile(dir, extension);
   if (fs::is_regular_file(boundary, error)) files.boundary = boundary;
   if (fs::is_regular_file(dir / "object_surfaces.vtp", error))
     files.objectSurfaces = dir / "object_surfaces.vtp";

@@ -102,6 +102,11 @@ void writeFrame(const ParticleFrame& frame, FrameFormat format, const std::files
   });
 }
 
+void writeParallelFrame(const std::vector<std::string>& pieces, bool torn,
+                        const std::filesystem::path& file) {
+  writeFileAtomically(file, [&](std::ostream& out) { writePvtp(pieces, torn, out); });
+}
+
 const char* frameExtension(FrameFormat format) {
   switch (format) {
     case FrameFormat::Vtp:

@@ -6,56 +6,12 @@
 #include <optional>
 #include <stdexcept>
 
+#include "io/xml_attributes.hpp"
 #include "sph/error.hpp"
 
 namespace sph::io {
 
 namespace {
-
-std::string unescapeXmlAttribute(const std::string& text) {
-  std::string plain;
-  for (std::size_t k = 0; k < text.size(); ++k) {
-    if (text[k] != '&') {
-      plain += text[k];
-      continue;
-    }
-    bool known = false;
-    for (const auto& [entity, c] : {std::pair<const char*, char>{"&amp;", '&'},
-                                    {"&lt;", '<'},
-                                    {"&gt;", '>'},
-                                    {"&quot;", '"'},
-                                    {"&apos;", '\''}}) {
-      if (text.compare(k, std::strlen(entity), entity) == 0) {
-        plain += c;
-        k += std::strlen(entity) - 1;
-        known = true;
-        break;
-      }
-    }
-    if (!known) return {};
-  }
-  return plain;
-}
-
-// The value of attribute `name` in the element text `element` (between "<DataSet" and its
-// end), or nothing.
-std::optional<std::string> attribute(const std::string& element, const std::string& name) {
-  for (std::size_t at = element.find(name); at != std::string::npos;
-       at = element.find(name, at + 1)) {
-    const bool starts = at == 0 || std::isspace(static_cast<unsigned char>(element[at - 1]));
-    std::size_t k = at + name.size();
-    while (k < element.size() && std::isspace(static_cast<unsigned char>(element[k]))) ++k;
-    if (!starts || k >= element.size() || element[k] != '=') continue;
-    ++k;
-    while (k < element.size() && std::isspace(static_cast<unsigned char>(element[k]))) ++k;
-    if (k >= element.size() || (element[k] != '"' && element[k] != '\'')) return std::nullopt;
-    const char quote = element[k];
-    const std::size_t end = element.find(quote, k + 1);
-    if (end == std::string::npos) return std::nullopt;
-    return element.substr(k + 1, end - k - 1);
-  }
-  return std::nullopt;
-}
 
 [[noreturn]] void refusePvd(const std::filesystem::path& file, const std::string& why) {
   throw InputError(file.string() + ": " + why);
@@ -74,8 +30,8 @@ std::vector<std::pair<double, std::string>> readPvd(const std::string& bytes,
     if (end == std::string::npos) refusePvd(file, "a DataSet element is not closed");
     const std::string element = bytes.substr(at + 8, end - at - 8);
     const std::string which = "DataSet " + std::to_string(frames.size() + 1);
-    const std::optional<std::string> time = attribute(element, "timestep");
-    const std::optional<std::string> name = attribute(element, "file");
+    const std::optional<std::string> time = xmlAttribute(element, "timestep");
+    const std::optional<std::string> name = xmlAttribute(element, "file");
     if (!time || !name) refusePvd(file, which + ": expected a timestep and a file");
     double t = 0.0;
     std::size_t used = 0;
@@ -87,10 +43,7 @@ std::vector<std::pair<double, std::string>> readPvd(const std::string& bytes,
     if (used == 0 || used != time->size() || !std::isfinite(t))
       refusePvd(file, which + ": timestep \"" + time->substr(0, 40) + "\" is not a number");
     const std::string relative = unescapeXmlAttribute(*name);
-    const std::filesystem::path path(relative);
-    bool escapes = relative.empty() || path.is_absolute();
-    for (const std::filesystem::path& part : path) escapes = escapes || part == "..";
-    if (escapes)
+    if (!staysInsideFolder(relative))
       refusePvd(file, which + ": file \"" + name->substr(0, 80) +
                           "\" is not a file inside the collection's folder");
     frames.emplace_back(t, relative);

@@ -18,6 +18,36 @@ namespace sph::io {
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "VTP writer assumes a little-endian host");
 static_assert(std::numeric_limits<float>::is_iec559, "VTP Float32 must be IEEE 754");
 
+std::vector<PointArrayTag> framePointArrays(bool torn) {
+  std::vector<PointArrayTag> tags = {
+      {"Float32", "velocity", 3, sizeof(float)},    {"Float32", "density", 1, sizeof(float)},
+      {"Float32", "pressure", 1, sizeof(float)},    {"UInt8", "kind", 1, 1},
+      {"Int32", "object", 1, sizeof(std::int32_t)}, {"UInt8", "surface", 1, 1},
+      {"UInt32", "id", 1, sizeof(std::uint32_t)},
+  };
+  if (torn) tags.push_back({"UInt8", "torn", 1, 1});
+  return tags;
+}
+
+void writePvtp(const std::vector<std::string>& pieces, bool torn, std::ostream& out) {
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"PPolyData\" version=\"1.0\" byte_order=\"LittleEndian\""
+         " header_type=\"UInt64\">\n"
+      << "  <PPolyData GhostLevel=\"0\">\n"
+      << "    <PPointData Scalars=\"density\" Vectors=\"velocity\">\n";
+  for (const PointArrayTag& tag : framePointArrays(torn)) {
+    out << "      <PDataArray type=\"" << tag.type << "\" Name=\"" << tag.name << '"';
+    if (tag.components > 1) out << " NumberOfComponents=\"" << tag.components << '"';
+    out << "/>\n";
+  }
+  out << "    </PPointData>\n"
+      << "    <PPoints>\n"
+      << "      <PDataArray type=\"Float32\" Name=\"Points\" NumberOfComponents=\"3\"/>\n"
+      << "    </PPoints>\n";
+  for (const std::string& piece : pieces) out << "    <Piece Source=\"" << piece << "\"/>\n";
+  out << "  </PPolyData>\n</VTKFile>\n";
+}
+
 void writeVtp(const ParticleFrame& frame, std::ostream& out) {
   const std::uint64_t n = frame.size();
   // Frames made by hand may leave the surface flags out: they read as 0.
@@ -27,16 +57,20 @@ void writeVtp(const ParticleFrame& frame, std::ostream& out) {
   // Tears are written only where the frame carries them.
   const bool torn = frame.torn.size() == n && n > 0;
   // Order matches the header sections below: PointData, then Points, then Verts.
-  std::vector<AppendedArray> arrays = {
-      {"Float32", "velocity", 3, 3 * n * sizeof(float), frame.velocity.data(), false, 0},
-      {"Float32", "density", 1, n * sizeof(float), frame.density.data(), false, 0},
-      {"Float32", "pressure", 1, n * sizeof(float), frame.pressure.data(), false, 0},
-      {"UInt8", "kind", 1, n * sizeof(std::uint8_t), frame.kind.data(), false, 0},
-      {"Int32", "object", 1, n * sizeof(std::int32_t), frame.object.data(), false, 0},
-      {"UInt8", "surface", 1, n * sizeof(std::uint8_t), surface, false, 0},
-      {"UInt32", "id", 1, n * sizeof(std::uint32_t), frame.id.data(), false, 0},
+  const auto dataOf = [&](const std::string& name) -> const void* {
+    if (name == "velocity") return frame.velocity.data();
+    if (name == "density") return frame.density.data();
+    if (name == "pressure") return frame.pressure.data();
+    if (name == "kind") return frame.kind.data();
+    if (name == "object") return frame.object.data();
+    if (name == "surface") return surface;
+    if (name == "id") return frame.id.data();
+    return frame.torn.data();
   };
-  if (torn) arrays.push_back({"UInt8", "torn", 1, n, frame.torn.data(), false, 0});
+  std::vector<AppendedArray> arrays;
+  for (const PointArrayTag& tag : framePointArrays(torn))
+    arrays.push_back({tag.type, tag.name, tag.components, n * tag.components * tag.bytes,
+                      dataOf(tag.name), false, 0});
   const std::size_t firstPoints = arrays.size();
   arrays.push_back(
       {"Float32", "Points", 3, 3 * n * sizeof(float), frame.position.data(), false, 0});

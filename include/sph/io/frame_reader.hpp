@@ -10,8 +10,9 @@
 
 namespace sph::io {
 
-// Reads a frame file by its extension (.vtp, .ply or .csv). Time and step come from the file
-// where it holds them (VTP: time; PLY: time and step); CSV holds neither and reads as 0.
+// Reads a frame file by its extension (.vtp, .ply or .csv; .pvtp, a distributed run's parallel
+// frame, as its pieces joined in id order). Time and step come from the file where it holds
+// them (VTP: time; PLY: time and step); CSV holds neither and reads as 0.
 // Throws InputError naming the file and what was expected when it cannot be read.
 ParticleFrame readFrame(const std::filesystem::path& file);
 

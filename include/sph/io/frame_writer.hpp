@@ -6,6 +6,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "sph/frame.hpp"
 #include "sph/scene.hpp"
@@ -16,6 +17,12 @@ namespace sph::io {
 // Throws OutputError naming the path and the system error when the file cannot be written,
 // std::invalid_argument when the frame's arrays disagree in length.
 void writeFrame(const ParticleFrame& frame, FrameFormat format, const std::filesystem::path& file);
+
+// A distributed run's frame as one parallel file (.pvtp) over its pieces, each a process's VTP
+// frame written by writeFrame, named relative to `file`'s folder (plain file names). ParaView
+// opens it as one frame, readFrame as one frame in id order. `torn`: the pieces carry tears.
+void writeParallelFrame(const std::vector<std::string>& pieces, bool torn,
+                        const std::filesystem::path& file);
 
 // "vtp", "ply", "csv"; "" for FrameFormat::None.
 const char* frameExtension(FrameFormat format);
