@@ -182,6 +182,7 @@ void smooth(StepProfile& into, const StepProfile& latest, double w) {
   mix(into.wallForces, latest.wallForces);
   mix(into.flow, latest.flow);
   mix(into.probes, latest.probes);
+  mix(into.exchange, latest.exchange);
 }
 
 void drawPanel(Simulation& sim, ViewerState& state, const render::ValueRange& colourRange) {

@@ -25,6 +25,10 @@
 
 namespace sph {
 
+namespace sim {
+class Decomposition;  // sph_distributed makes one (distributed/fluid_decomposition.hpp)
+}
+
 // A frame and its statistics taken at one instant (Simulation::capture) and assembled later,
 // on any thread: the simulation may step meanwhile.
 class FrameCapture {
@@ -83,6 +87,15 @@ class Simulation {
   // `byId` holds x, y, z for ids 0 .. fluidParticles-1. It stays until replaced; an empty
   // vector removes it. Throws std::invalid_argument on a wrong size.
   void setExternalAcceleration(const std::vector<float>& byId);
+  // Runs this simulation as one process of a run across several (MPI: every process builds the
+  // same scene and calls this with its part of the decomposition before the first step). From
+  // then on each process steps the particles it owns, with copies of its neighbours' within
+  // reach; its frames hold the particles it owns, its stats() every process's (a collective
+  // call, as step() is). Throws InputError naming the scene where it has what is
+  // not yet run across processes (DFSPH or PBF, objects, emitters, outlets, probes, periodic
+  // faces), std::logic_error after the first step, std::invalid_argument on null. saveState and
+  // setExternalAcceleration refuse a distributed run (std::logic_error).
+  void distribute(std::shared_ptr<sim::Decomposition> ranks);
 
   LiveParameters liveParameters() const;
   // From the next step on. c0² is proportional to the stiffness for every equation of state,

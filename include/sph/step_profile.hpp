@@ -17,9 +17,10 @@ struct StepProfile {
   double wallForces = 0.0;  // the fluid's force on the walls a force probe reads
   double flow = 0.0;        // emitters: the inflow driven, the new particles put in
   double probes = 0.0;      // sampling the scene's probes
+  double exchange = 0.0;    // a distributed run: particles and densities between processes
   double total() const {
     return buildGrid + densityPressure + divergenceSolve + forces + interaction + timeStep +
-           densitySolve + integrate + objects + wallForces + flow + probes;
+           densitySolve + integrate + objects + wallForces + flow + probes + exchange;
   }
 };
 

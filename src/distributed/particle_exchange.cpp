@@ -10,8 +10,20 @@ namespace sph::distributed {
 
 namespace {
 
+float distanceSquaredToBox(const float* p, const Box& b) {
+  float d2 = 0.0f;
+  for (int c = 0; c < 3; ++c) {
+    const float below = b.min[c] - p[c], above = p[c] - b.max[c];
+    const float d = std::max({below, above, 0.0f});
+    d2 += d * d;
+  }
+  return d2;
+}
+
+}  // namespace
+
 // A record as bytes: its id, then its values.
-void pack(const ParticleRecords& r, std::size_t i, std::vector<std::byte>& out) {
+void packRecord(const ParticleRecords& r, std::size_t i, std::vector<std::byte>& out) {
   const std::size_t at = out.size();
   const std::size_t valueBytes = std::size_t(r.width) * sizeof(float);
   out.resize(at + sizeof(std::uint32_t) + valueBytes);
@@ -19,7 +31,7 @@ void pack(const ParticleRecords& r, std::size_t i, std::vector<std::byte>& out) 
   std::memcpy(out.data() + at + sizeof(std::uint32_t), r.of(i), valueBytes);
 }
 
-void unpack(const std::vector<std::byte>& bytes, ParticleRecords& into) {
+void unpackRecords(const std::vector<std::byte>& bytes, ParticleRecords& into) {
   const std::size_t valueBytes = std::size_t(into.width) * sizeof(float);
   const std::size_t stride = sizeof(std::uint32_t) + valueBytes;
   if (bytes.size() % stride != 0)
@@ -34,18 +46,6 @@ void unpack(const std::vector<std::byte>& bytes, ParticleRecords& into) {
     std::memcpy(into.value.data() + v, bytes.data() + at + sizeof id, valueBytes);
   }
 }
-
-float distanceSquaredToBox(const float* p, const Box& b) {
-  float d2 = 0.0f;
-  for (int c = 0; c < 3; ++c) {
-    const float below = b.min[c] - p[c], above = p[c] - b.max[c];
-    const float d = std::max({below, above, 0.0f});
-    d2 += d * d;
-  }
-  return d2;
-}
-
-}  // namespace
 
 void ParticleRecords::append(const ParticleRecords& from, std::size_t i) {
   id.push_back(from.id[i]);
@@ -76,11 +76,11 @@ ParticleRecords migrate(const Communicator& comm, const ParticleRecords& records
       throw std::invalid_argument("migrate: particle " + std::to_string(records.id[i]) +
                                   " sent to rank " + std::to_string(owner[i]) + " of " +
                                   std::to_string(comm.size()));
-    pack(records, i, send[std::size_t(owner[i])]);
+    packRecord(records, i, send[std::size_t(owner[i])]);
   }
   ParticleRecords out;
   out.width = records.width;
-  for (const std::vector<std::byte>& bytes : comm.exchange(send)) unpack(bytes, out);
+  for (const std::vector<std::byte>& bytes : comm.exchange(send)) unpackRecords(bytes, out);
   out.sortById();
   return out;
 }
@@ -134,11 +134,11 @@ ParticleRecords exchangeHalo(const Communicator& comm, const HaloPlan& plan,
       if (i >= owned.size())
         throw std::invalid_argument("exchangeHalo: the plan names particle " + std::to_string(i) +
                                     " of " + std::to_string(owned.size()));
-      pack(owned, i, send[r]);
+      packRecord(owned, i, send[r]);
     }
   ParticleRecords halo;
   halo.width = owned.width;
-  for (const std::vector<std::byte>& bytes : comm.exchange(send)) unpack(bytes, halo);
+  for (const std::vector<std::byte>& bytes : comm.exchange(send)) unpackRecords(bytes, halo);
   return halo;
 }
 

@@ -26,6 +26,11 @@ struct ParticleRecords {
   void sortById();
 };
 
+// Record i as bytes (its id, then its values) at the end of `out`; and the records of such
+// bytes appended to `into` (of the same width). Throws std::runtime_error on a partial record.
+void packRecord(const ParticleRecords& records, std::size_t i, std::vector<std::byte>& out);
+void unpackRecords(const std::vector<std::byte>& bytes, ParticleRecords& into);
+
 // Sends each record to owner[i] and returns what this rank owns afterwards, in id order.
 // Collective. Throws std::invalid_argument when owner's size or a rank in it is wrong.
 ParticleRecords migrate(const Communicator& comm, const ParticleRecords& records,

@@ -69,12 +69,17 @@ struct GeometricPartitioner::Impl {
   Zoltan_Struct* zoltan = nullptr;
   Query query;
   int rank = 0;
+  PartitionMethod method = PartitionMethod::Rcb;
+  bool cut = false;  // assign has run
+  // This rank's box of the kept RCB cuts: a point inside is its own, with no query.
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
 };
 
 GeometricPartitioner::GeometricPartitioner(const Communicator& comm, PartitionMethod method)
     : impl_(std::make_unique<Impl>()) {
   initialiseZoltan();
   impl_->rank = comm.rank();
+  impl_->method = method;
   impl_->zoltan = Zoltan_Create(comm.handle());
   if (!impl_->zoltan) throw std::runtime_error("Zoltan_Create failed");
   Zoltan_Struct* z = impl_->zoltan;
@@ -86,7 +91,13 @@ GeometricPartitioner::GeometricPartitioner(const Communicator& comm, PartitionMe
   Zoltan_Set_Param(z, "RETURN_LISTS", "PARTS");
   // Within 1 % of the mean work: the step waits for the slowest rank.
   Zoltan_Set_Param(z, "IMBALANCE_TOL", "1.01");
-  if (method == PartitionMethod::Rcb) Zoltan_Set_Param(z, "RCB_REUSE", "1");
+  if (method == PartitionMethod::Rcb) {
+    Zoltan_Set_Param(z, "RCB_REUSE", "1");
+    // A plane of particles on a cut (a lattice's, at the start) goes to one side whole: split,
+    // the half that moves first would cross back at once.
+    Zoltan_Set_Param(z, "RCB_RECTILINEAR_BLOCKS", "1");
+  }
+  Zoltan_Set_Param(z, "KEEP_CUTS", "1");  // owners() asks where a moved particle belongs
   Zoltan_Set_Num_Obj_Fn(z, objectCount, &impl_->query);
   Zoltan_Set_Obj_List_Fn(z, objectList, &impl_->query);
   Zoltan_Set_Num_Geom_Fn(z, geometryDimension, &impl_->query);
@@ -120,6 +131,34 @@ std::vector<int> GeometricPartitioner::assign(const std::vector<float>& points,
   for (int k = 0; k < exports; ++k) owner[std::size_t(exportLocal[k])] = exportParts[k];
   Zoltan_LB_Free_Part(&importGlobal, &importLocal, &importProcs, &importParts);
   Zoltan_LB_Free_Part(&exportGlobal, &exportLocal, &exportProcs, &exportParts);
+  impl_->cut = true;
+  if (impl_->method == PartitionMethod::Rcb) {
+    int dimensions = 0;
+    Impl& m = *impl_;
+    if (Zoltan_RCB_Box(m.zoltan, m.rank, &dimensions, &m.lo[0], &m.lo[1], &m.lo[2], &m.hi[0],
+                       &m.hi[1], &m.hi[2]) != ZOLTAN_OK)
+      throw std::runtime_error("Zoltan_RCB_Box failed");
+  }
+  return owner;
+}
+
+std::vector<int> GeometricPartitioner::owners(const std::vector<float>& points) const {
+  const Impl& m = *impl_;
+  if (!m.cut) throw std::logic_error("GeometricPartitioner::owners: no partition yet (assign)");
+  const std::size_t n = points.size() / 3;
+  std::vector<int> owner(n, m.rank);
+  for (std::size_t i = 0; i < n; ++i) {
+    double p[3] = {points[3 * i], points[3 * i + 1], points[3 * i + 2]};
+    // A point on the box's face stays: the partition may have split a plane of particles
+    // lying on a cut (a lattice's), and the cut alone would hand the whole plane to one side.
+    const bool inside = m.method == PartitionMethod::Rcb && m.lo[0] <= p[0] && p[0] <= m.hi[0] &&
+                        m.lo[1] <= p[1] && p[1] <= m.hi[1] && m.lo[2] <= p[2] && p[2] <= m.hi[2];
+    if (inside) continue;
+    int rank = 0, part = 0;
+    if (Zoltan_LB_Point_PP_Assign(m.zoltan, p, &rank, &part) != ZOLTAN_OK)
+      throw std::runtime_error("Zoltan_LB_Point_PP_Assign failed");
+    owner[i] = part;
+  }
   return owner;
 }
 

@@ -31,6 +31,11 @@ class GeometricPartitioner {
   // a collective call; returns for each of them the rank that is to own it. Deterministic: the
   // same particles on the same ranks give the same answer.
   std::vector<int> assign(const std::vector<float>& points, const std::vector<float>& work);
+  // Each of this rank's points' rank by the cuts the last assign made (kept: nothing is
+  // partitioned again, nothing crosses ranks): where a particle that moved now belongs. Under
+  // RCB a point still in this rank's box, its faces included, stays. Throws std::logic_error
+  // before the first assign.
+  std::vector<int> owners(const std::vector<float>& points) const;
 
  private:
   struct Impl;

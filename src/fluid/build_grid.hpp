@@ -92,9 +92,11 @@ std::size_t buildGrid(FluidParticles<B>& fluid, Grid<B>& grid, const DomainParam
       },
       SPH_LAMBDA(const detail::Bounds& a, const detail::Bounds& b) { return detail::merge(a, b); });
   const Periodicity& periodic = domain.periodic;
-  grid.spec = bounds.any ? makePeriodicGrid(bounds.lo, bounds.hi, grid.cellSize, periodic.axes,
-                                            periodic.lo, periodic.hi)
-                         : makeGrid(domain.min, domain.min, grid.cellSize);
+  const Vec3 lo = grid.boundsGiven ? grid.givenLo : bounds.lo;
+  const Vec3 hi = grid.boundsGiven ? grid.givenHi : bounds.hi;
+  grid.spec = bounds.any
+                  ? makePeriodicGrid(lo, hi, grid.cellSize, periodic.axes, periodic.lo, periodic.hi)
+                  : makeGrid(domain.min, domain.min, grid.cellSize);
   const GridSpec spec = grid.spec;
   const std::uint32_t outsideBin = spec.cellCount;
 

@@ -65,8 +65,13 @@ std::size_t integrate(FluidParticles<B>& fluid, float dt, const DomainParameters
         position[i] = makeVec4(x);
       });
   if (!d.clampOutside || d.dampedBox) return 0;
+  const std::uint32_t* id = fluid.id.data();
+  // A distributed run's ghosts are counted by their owners.
   return B::reduce(
-      fluid.count, std::size_t{0}, SPH_LAMBDA(std::size_t i) { return std::size_t(velocity[i].w); },
+      fluid.count, std::size_t{0},
+      SPH_LAMBDA(std::size_t i) {
+        return isGhost(id[i]) ? std::size_t{0} : std::size_t(velocity[i].w);
+      },
       SPH_LAMBDA(std::size_t a, std::size_t b) { return a + b; });
 }
 

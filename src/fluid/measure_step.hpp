@@ -11,7 +11,8 @@
 
 namespace sph::fluid {
 
-// What the time step and the failure check need, reduced over all fluid particles.
+// What the time step and the failure check need, reduced over all fluid particles (a
+// distributed run's ghosts left out: their owners measure them).
 struct StepMeasures {
   float maxSpeed = 0.0f;
   float maxAcceleration = 0.0f;
@@ -43,9 +44,11 @@ StepMeasures measureStep(const FluidParticles<B>& fluid, float restDensity) {
   const Vec4* velocity = fluid.velocity.data();
   const Vec4* acceleration = fluid.acceleration.data();
   const float* density = fluid.density.data();
+  const std::uint32_t* id = fluid.id.data();
   StepMeasures m = B::reduce(
       fluid.count, StepMeasures{},
       SPH_LAMBDA(std::size_t i) {
+        if (isGhost(id[i])) return StepMeasures{};
         const Vec3 v = xyz(velocity[i]);
         const Vec3 a = xyz(acceleration[i]);
         const bool ok = isFinite(v) && isFinite(a) && isFinite(density[i]);
@@ -74,6 +77,7 @@ BadParticle findBadParticle(const FluidParticles<B>& fluid, float restDensity,
   B::download(fluid.id, id.data(), n);
   BadParticle bad;
   for (std::size_t i = 0; i < n; ++i) {
+    if (isGhost(id[i])) continue;
     const Vec3 v = xyz(velocity[i]);
     const Vec3 a = xyz(acceleration[i]);
     const float rho = density[i];

@@ -24,6 +24,14 @@ constexpr std::uint32_t kRecordFields = 8;
 constexpr float kObjectReach = 1.5f;  // of h
 constexpr std::uint32_t kObjectNeighborStride = 96;
 
+// A distributed run's copy of another process's particle (a ghost): its id with this bit set.
+// Ghosts are neighbours for the passes and nothing more: the step's measures and counts skip
+// them, and the next exchange replaces them.
+constexpr std::uint32_t kGhostBit = 0x80000000u;
+SPH_HD_INLINE bool isGhost(std::uint32_t id) {
+  return (id & kGhostBit) != 0;
+}
+
 // Fluid particles, reordered by cell every step so neighbour loops read memory in order.
 template <class B>
 struct FluidParticles {
@@ -115,6 +123,11 @@ struct BoundaryParticles {
 template <class B>
 struct Grid {
   float cellSize = 0.0f;  // h
+  // Where given (a distributed run: the bounds of every process's particles), the grid spans
+  // these instead of this process's particles, so that every process sorts a particle into
+  // the same cell as one process would.
+  bool boundsGiven = false;
+  Vec3 givenLo{0, 0, 0}, givenHi{0, 0, 0};
   GridSpec spec;
   typename B::template Buffer<std::uint32_t> cellStart;  // cellCount + 2
   typename B::SortScratch sortScratch;

@@ -8,6 +8,7 @@
 
 #include "fluid/drive_inflow.hpp"
 #include "fluid/measure_surface.hpp"
+#include "fluid/overwrite_density.hpp"
 #include "fluid/stages.hpp"
 #include "fluid/write_for_drawing.hpp"
 #include "interaction/stages.hpp"
@@ -36,15 +37,6 @@ HostParticles downloadNow(const fluid::FluidParticles<B>& fluid) {
   B::download(fluid.acceleration, h.acceleration.data(), n);
   return h;
 }
-
-class ReadyParticles final : public PendingParticles {
- public:
-  explicit ReadyParticles(HostParticles particles) : particles_(std::move(particles)) {}
-  HostParticles take() override { return std::move(particles_); }
-
- private:
-  HostParticles particles_;
-};
 
 // The CPU's memory is the host's: the copy is made at once. The CUDA backend specialises this
 // (cuda_engine.cu).
@@ -304,6 +296,25 @@ class EngineImpl final : public FluidEngine {
 
   void setParameters(const fluid::FluidParameters& params) override { params_ = params; }
 
+  void setGridBounds(Vec3 lo, Vec3 hi) override {
+    grid_.boundsGiven = true;
+    grid_.givenLo = lo;
+    grid_.givenHi = hi;
+  }
+  void overwriteDensity(const std::vector<std::uint32_t>& rows,
+                        const std::vector<float>& density) override {
+    fluid::overwriteDensity(fluid_, rows, density, params_, rowScratch_, densityScratch_);
+  }
+  HostDensities downloadDensities() const override {
+    const std::size_t n = fluid_.count;
+    HostDensities out;
+    out.id.resize(n);
+    out.density.resize(n);
+    B::download(fluid_.id, out.id.data(), n);
+    B::download(fluid_.density, out.density.data(), n);
+    return out;
+  }
+
   void setExternalAcceleration(const std::vector<Vec4>& byId) override {
     if (byId.empty()) {
       fluid_.externalById.resize(0);
@@ -352,6 +363,8 @@ class EngineImpl final : public FluidEngine {
   typename B::template Buffer<Vec4> wallForce_;
   typename B::template Buffer<std::uint8_t> watchedWall_;
   typename B::template Buffer<PointSums> probeSums_;
+  typename B::template Buffer<std::uint32_t> rowScratch_;  // overwriteDensity's
+  typename B::template Buffer<float> densityScratch_;
   std::vector<std::uint64_t> drained_;  // by outlet, since the start
 };
 

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "fluid/dfsph_settings.hpp"
@@ -40,6 +41,16 @@ class PendingParticles {
   virtual HostParticles take() = 0;
 };
 
+// A copy made already.
+class ReadyParticles final : public PendingParticles {
+ public:
+  explicit ReadyParticles(HostParticles particles) : particles_(std::move(particles)) {}
+  HostParticles take() override { return std::move(particles_); }
+
+ private:
+  HostParticles particles_;
+};
+
 // The fluid's contact forces on the objects' surface particles, by the engine's handle.
 struct HostObjectForces {
   std::vector<std::uint32_t> handle;
@@ -61,6 +72,12 @@ struct HostFluidState {
   std::vector<Vec4> externalById;  // empty when unused
   std::vector<std::uint64_t> drainedByOutlet;
   bool densityIsState = false;
+};
+
+// The density pass's result, in the engine's order (a distributed run's ghost refresh).
+struct HostDensities {
+  std::vector<std::uint32_t> id;
+  std::vector<float> density;
 };
 
 struct HostWalls {
@@ -106,6 +123,12 @@ class FluidStages {
   virtual void setExternalAcceleration(const std::vector<Vec4>& byId) = 0;
   // New values for the next steps (Simulation::setLiveParameters); the particles stay.
   virtual void setParameters(const fluid::FluidParameters& params) = 0;
+  // A distributed run (sim/exchange_particles.cpp): from the next buildGrid on, the grid spans
+  // [lo, hi], the bounds of every process's particles; and after the density pass, the rows
+  // of ghosts take the density their owners computed (pressure following).
+  virtual void setGridBounds(Vec3 lo, Vec3 hi) = 0;
+  virtual void overwriteDensity(const std::vector<std::uint32_t>& rows,
+                                const std::vector<float>& density) = 0;
 };
 
 // What the time-step guard reads of the fluid (sim/time_step_guard.cpp).
@@ -153,6 +176,7 @@ class FluidOutputs {
   // them to pinned host memory while the next steps run; the CPU copies at once.
   virtual std::unique_ptr<PendingParticles> beginDownload() const = 0;
   virtual HostWalls downloadWalls() const = 0;
+  virtual HostDensities downloadDensities() const = 0;
   // The fluid's arrays in place where they are host memory; empty otherwise.
   virtual FluidView hostView() const = 0;
   // The fluid's state between steps, and back (the particle counts may differ from now's).

@@ -76,6 +76,8 @@ void Simulation::containFluid(std::int32_t object, const std::vector<std::uint32
 }
 
 void Simulation::setExternalAcceleration(const std::vector<float>& byId) {
+  if (impl_->ranks)
+    throw std::logic_error("setExternalAcceleration: not yet for a run across processes");
   if (byId.empty()) {
     impl_->engine->setExternalAcceleration({});
     return;

@@ -14,6 +14,7 @@
 #include "backend/cpu_parallel.hpp"
 #include "scene/scene_loader.hpp"
 #include "sim/calibration.hpp"
+#include "sim/decomposition.hpp"
 #include "sim/fluid_engine.hpp"
 #include "sim/inflow.hpp"
 #include "sim/object_coupling.hpp"
@@ -51,6 +52,8 @@ struct Simulation::Impl {
   sim::Outputs outputs;
   sim::SolverRecord solves;
   StepProfile profile;
+  // A run across processes (Simulation::distribute); none in one process.
+  std::shared_ptr<sim::Decomposition> ranks;
 
   // A stage of a step: its name, the StepProfile bucket its time adds to, and what it does.
   struct Stage {
@@ -95,7 +98,8 @@ struct Simulation::Impl {
     const double objectStep =
         coupling.coupled() ? coupling.timeStep(calibration, scene.interaction.distanceExponent)
                            : HUGE_VAL;
-    clock.dt = sim::nextTimeStep(scene, calibration, *engine, clock, counts, objectStep);
+    clock.dt =
+        sim::nextTimeStep(scene, calibration, *engine, clock, counts, objectStep, ranks.get());
   }
   void integrate() {
     counts.clamped += engine->integrate(float(clock.dt));
@@ -121,6 +125,9 @@ struct Simulation::Impl {
   void checkContainment() { coupling.computeContacts(*engine); }
   void collectObjectForces() { coupling.collectForces(*engine, clock.dt); }
   void advanceObjects() { coupling.advance(clock.dt); }
+  // A distributed run (sim/exchange_particles.cpp).
+  void exchangeParticles();
+  void refreshGhosts();
   void collectWallForces() { outputs.collectWallForces(*engine); }
   void driveInflow() { engine->driveInflow(inflow.zones); }
   // New particles have no neighbour lists until the next density pass: the surface is not
@@ -158,6 +165,10 @@ struct Simulation::Impl {
 
   // Time, counts, leaks and objects: the statistics that need no copy of the fluid.
   FrameStats statsWithoutParticles(const Simulation& sim) const;
+  // The fluid as a frame takes it: a distributed run's ghosts left out.
+  sim::HostParticles ownedParticles() const;
+  // The statistics of every process's particles, each passing its own (a collective call).
+  void addAcrossProcesses(FrameStats& stats) const;
   void measureSurfaceIfStale() const { outputs.measureSurfaceIfStale(*engine); }
 };
 

@@ -222,6 +222,7 @@ struct FrameCapture::Impl {
   float restDensity = 0.0f;
   float surfaceThreshold = 0.0f;
   double mass = 0.0;
+  bool statsComplete = false;  // a distributed run's, reduced across processes at capture
 };
 
 FrameCapture::FrameCapture(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -233,7 +234,7 @@ void FrameCapture::take(ParticleFrame& frame, FrameStats& stats) {
   Impl& c = *impl_;
   const sim::HostParticles f = c.fluid->take();
   stats = c.stats;
-  addParticleSums(stats, f, c.restDensity, c.surfaceThreshold, c.mass);
+  if (!c.statsComplete) addParticleSums(stats, f, c.restDensity, c.surfaceThreshold, c.mass);
   FrameBuilder b;
   b.out.time = stats.time;
   b.out.step = stats.steps;
@@ -262,12 +263,47 @@ FrameStats Simulation::Impl::statsWithoutParticles(const Simulation& sim) const 
   return out;
 }
 
+sim::HostParticles Simulation::Impl::ownedParticles() const {
+  sim::HostParticles f = engine->download();
+  if (!ranks) return f;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < f.id.size(); ++i) {
+    if (fluid::isGhost(f.id[i])) continue;
+    f.id[kept] = f.id[i];
+    f.position[kept] = f.position[i];
+    f.velocity[kept] = f.velocity[i];
+    f.density[kept] = f.density[i];
+    f.pressure[kept] = f.pressure[i];
+    f.acceleration[kept] = f.acceleration[i];
+    ++kept;
+  }
+  for (auto* a : {&f.position, &f.velocity, &f.acceleration}) a->resize(kept);
+  for (auto* a : {&f.density, &f.pressure}) a->resize(kept);
+  f.id.resize(kept);
+  return f;
+}
+
+void Simulation::Impl::addAcrossProcesses(FrameStats& out) const {
+  sim::Decomposition& all = *ranks;
+  const double n = double(out.fluidCount);
+  out.fluidCount = all.sum(out.fluidCount);
+  const double total = double(out.fluidCount);
+  out.kineticEnergy = all.sum(out.kineticEnergy);
+  out.meanDensity = total > 0 ? all.sum(out.meanDensity * n) / total : 0.0;
+  out.averageDensityError = total > 0 ? all.sum(out.averageDensityError * n) / total : 0.0;
+  out.maxDensityError = all.max(out.maxDensityError);
+  out.maxSpeed = all.max(out.maxSpeed);
+  out.surfaceCount = all.sum(out.surfaceCount);
+  out.clampedCount = all.sum(out.clampedCount);
+}
+
 FrameStats Simulation::stats() const {
   const Impl& s = *impl_;
   FrameStats out = s.statsWithoutParticles(*this);
   s.measureSurfaceIfStale();
-  addParticleSums(out, s.engine->download(), s.params.restDensity, s.params.surfaceThreshold,
+  addParticleSums(out, s.ownedParticles(), s.params.restDensity, s.params.surfaceThreshold,
                   s.params.mass);
+  if (s.ranks) s.addAcrossProcesses(out);
   return out;
 }
 
@@ -275,8 +311,18 @@ FrameCapture Simulation::capture() const {
   const Impl& s = *impl_;
   auto c = std::make_unique<FrameCapture::Impl>();
   s.measureSurfaceIfStale();
-  c->fluid = s.engine->beginDownload();
   c->stats = s.statsWithoutParticles(*this);
+  if (s.ranks) {
+    // The statistics are every process's: reduced now, on the thread that steps.
+    sim::HostParticles owned = s.ownedParticles();
+    addParticleSums(c->stats, owned, s.params.restDensity, s.params.surfaceThreshold,
+                    s.params.mass);
+    s.addAcrossProcesses(c->stats);
+    c->statsComplete = true;
+    c->fluid = std::make_unique<sim::ReadyParticles>(std::move(owned));
+  } else {
+    c->fluid = s.engine->beginDownload();
+  }
   if (s.coupling.objects) {
     s.coupling.objects->wait();
     c->objects = s.coupling.objects->world().particles();
@@ -293,7 +339,7 @@ FrameCapture Simulation::capture() const {
 ParticleFrame Simulation::frame(bool includeBoundary) const {
   const Impl& s = *impl_;
   s.measureSurfaceIfStale();
-  const sim::HostParticles f = s.engine->download();
+  const sim::HostParticles f = s.ownedParticles();
   FrameBuilder b;
   b.out.time = s.clock.time;
   b.out.step = s.clock.steps;

@@ -21,29 +21,44 @@ namespace {
   throw SimulationFailure(message.str(), clock.steps, 0, "time step");
 }
 
+// The fastest particle: of every process in a distributed run (the lowest id among equals).
+std::uint32_t fastestParticle(FluidEngine& engine, Decomposition* ranks) {
+  const HostParticles fluid = engine.download();  // once, on the way out
+  fluid::BadParticle fastest;
+  for (std::size_t i = 0; i < fluid.id.size(); ++i) {
+    if (fluid::isGhost(fluid.id[i])) continue;
+    const float speed = length(xyz(fluid.velocity[i]));
+    if (!fastest.found || speed > fastest.value ||
+        (speed == fastest.value && fluid.id[i] < fastest.id))
+      fastest = {true, fluid.id[i], "speed", speed};
+  }
+  if (!ranks) return fastest.id;
+  const double top = ranks->max(fastest.found ? double(fastest.value) : -1.0);
+  fastest.found = fastest.found && double(fastest.value) == top;
+  return ranks->combine(fastest).id;
+}
+
 [[noreturn]] void failRunaway(const Scene& scene, FluidEngine& engine, const Clock& clock,
                               const RunCounts& counts, const fluid::StepMeasures& m,
-                              double speedLimit) {
+                              double speedLimit, std::uint64_t fluidCount, Decomposition* ranks) {
   std::ostringstream message;
   message << "simulation failed at step " << clock.steps << " (t = " << clock.time << " s): ";
-  if (engine.fluidCount() == 0) {
+  if (fluidCount == 0) {
     message << "every fluid particle has left the domain (" << counts.removed << " removed)";
     throw SimulationFailure(message.str(), clock.steps, 0, "fluid count");
   }
-  const HostParticles fluid = engine.download();  // once, on the way out
-  std::size_t fastest = 0;
-  for (std::size_t i = 1; i < fluid.id.size(); ++i)
-    if (lengthSquared(xyz(fluid.velocity[i])) > lengthSquared(xyz(fluid.velocity[fastest])))
-      fastest = i;
-  message << "particle " << fluid.id[fastest] << ": speed = " << m.maxSpeed
+  const std::uint32_t fastest = fastestParticle(engine, ranks);
+  message << "particle " << fastest << ": speed = " << m.maxSpeed
           << (scene.failure.maxSpeed ? " m/s, past failure.max_speed ("
                                      : " m/s, past ten times the speed of sound (")
           << speedLimit << " m/s)";
-  throw SimulationFailure(message.str(), clock.steps, fluid.id[fastest], "speed");
+  throw SimulationFailure(message.str(), clock.steps, fastest, "speed");
 }
 
-[[noreturn]] void failBadParticle(FluidEngine& engine, const Clock& clock, float bound) {
-  const fluid::BadParticle bad = engine.findBadParticle(bound);
+[[noreturn]] void failBadParticle(FluidEngine& engine, const Clock& clock, float bound,
+                                  Decomposition* ranks) {
+  fluid::BadParticle bad = engine.findBadParticle(bound);
+  if (ranks) bad = ranks->combine(bad);
   std::ostringstream message;
   message << "simulation failed at step " << clock.steps << " (t = " << clock.time
           << " s): particle " << bad.id << ": " << bad.quantity << " = " << bad.value;
@@ -54,10 +69,11 @@ namespace {
 }  // namespace
 
 double nextTimeStep(const Scene& scene, const Calibration& calibration, FluidEngine& engine,
-                    const Clock& clock, const RunCounts& counts, double objectStep) {
-  const fluid::StepMeasures m = engine.measureStep();
+                    const Clock& clock, const RunCounts& counts, double objectStep,
+                    Decomposition* ranks) {
+  const fluid::StepMeasures m = ranks ? ranks->combine(engine.measureStep()) : engine.measureStep();
   const float bound = static_cast<float>(scene.failure.maxDensityError);
-  if (!m.finite || m.maxDensityError > bound) failBadParticle(engine, clock, bound);
+  if (!m.finite || m.maxDensityError > bound) failBadParticle(engine, clock, bound, ranks);
   // Past the scene's bound, by default ten times the speed of sound, or no fluid left at all:
   // a blow-up the density bound did not catch (a fixed step too long for the stiffness), not
   // a result.
@@ -65,8 +81,10 @@ double nextTimeStep(const Scene& scene, const Calibration& calibration, FluidEng
       10.0 * std::max(calibration.soundSpeed, 10.0 * calibration.maxExpectedSpeed));
   // A scene with flow in or out may run empty.
   const bool flows = !scene.emitters.empty() || !scene.outlets.empty();
-  if (m.maxSpeed > speedLimit || (engine.fluidCount() == 0 && counts.initialFluid > 0 && !flows))
-    failRunaway(scene, engine, clock, counts, m, speedLimit);
+  const std::uint64_t fluidCount =
+      ranks ? ranks->sum(std::uint64_t(engine.fluidCount())) : engine.fluidCount();
+  if (m.maxSpeed > speedLimit || (fluidCount == 0 && counts.initialFluid > 0 && !flows))
+    failRunaway(scene, engine, clock, counts, m, speedLimit, fluidCount, ranks);
   // The position solver's substeps are fixed: its constraints hold at any step, and its
   // substeps keep each particle's move a fraction of its radius at the expected speeds.
   double next =

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "sim/decomposition.hpp"
 #include "sim/fluid_engine.hpp"
 #include "sph/calibration.hpp"
 #include "sph/scene.hpp"
@@ -35,8 +36,10 @@ constexpr double kShortestStep = 1e-9;  // s
 // The next step: the longest the solver's bounds and objectStep (HUGE_VAL without objects)
 // allow, landing exactly on clock.until rather than leaving a sliver of a step for later.
 // A run that has failed throws SimulationFailure naming the step, the particle and the
-// quantity; the state is left as the last good step made it.
+// quantity; the state is left as the last good step made it. In a distributed run (`ranks`)
+// the measures are every process's, so all take the same step or all fail with the same message.
 double nextTimeStep(const Scene& scene, const Calibration& calibration, FluidEngine& engine,
-                    const Clock& clock, const RunCounts& counts, double objectStep);
+                    const Clock& clock, const RunCounts& counts, double objectStep,
+                    Decomposition* ranks = nullptr);
 
 }  // namespace sph::sim

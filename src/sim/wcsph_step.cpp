@@ -8,11 +8,20 @@ namespace sph {
 
 std::vector<Simulation::Impl::Stage> Simulation::Impl::wcsphStages() const {
   std::vector<Stage> list;
+  // Across processes: each owns its part's particles and holds its neighbours' as ghosts.
+  if (ranks)
+    list.push_back({"exchange particles", &StepProfile::exchange, &Impl::exchangeParticles});
   list.push_back({"build grid", &StepProfile::buildGrid, &Impl::buildGrid});
   list.push_back({"density and pressure", &StepProfile::densityPressure, &Impl::sumDensity});
+  // A ghost at the halo's edge misses neighbours: its owner's density is the right one, for
+  // the continuity pass's diffusion as for the forces.
+  const Stage ghostDensities{"ghost densities", &StepProfile::exchange, &Impl::refreshGhosts};
   // With continuity the sums only list the neighbours; the density is integrated.
-  if (params.continuityDensity)
+  if (params.continuityDensity) {
+    if (ranks) list.push_back(ghostDensities);
     list.push_back({"continuity density", &StepProfile::densityPressure, &Impl::advanceDensity});
+  }
+  if (ranks) list.push_back(ghostDensities);
   list.push_back({"forces", &StepProfile::forces, &Impl::computeForces});
   if (coupling.coupled())
     list.push_back({"contacts with objects", &StepProfile::interaction, &Impl::contactObjects});

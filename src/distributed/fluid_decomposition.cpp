@@ -1,0 +1,359 @@
+#include "distributed/fluid_decomposition.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+#include "distributed/id_order.hpp"
+#include "distributed/particle_exchange.hpp"
+#include "fluid/build_grid.hpp"
+#include "sph/core/grid.hpp"
+
+namespace sph::distributed {
+
+namespace {
+
+// A particle's record: position, velocity, acceleration (4 floats each), density, pressure,
+// and the incompressible solver's warm start (4) where it runs.
+constexpr int kFields = 14;
+constexpr int kWarmStartFields = 4;
+
+void appendRecord(ParticleRecords& out, const sim::HostFluidState& s, std::size_t i) {
+  const sim::HostParticles& p = s.particles;
+  out.id.push_back(p.id[i] & ~fluid::kGhostBit);
+  const auto put = [&](const Vec4& v) { out.value.insert(out.value.end(), {v.x, v.y, v.z, v.w}); };
+  put(p.position[i]);
+  put(p.velocity[i]);
+  put(p.acceleration[i]);
+  out.value.push_back(p.density[i]);
+  out.value.push_back(p.pressure[i]);
+  if (!s.warmStart.empty()) put(s.warmStart[i]);
+}
+
+Vec4 vec4At(const float* v) {
+  return Vec4{v[0], v[1], v[2], v[3]};
+}
+
+// The records into the state's arrays, in the given order; ghosts (index >= owned.size() in
+// the joint numbering) with their ids marked.
+void writeState(sim::HostFluidState& s, const ParticleRecords& owned, const ParticleRecords& ghosts,
+                const std::vector<std::uint32_t>& order) {
+  sim::HostParticles& p = s.particles;
+  const std::size_t n = order.size();
+  const bool warm = !s.warmStart.empty();
+  p.id.resize(n);
+  p.position.resize(n);
+  p.velocity.resize(n);
+  p.acceleration.resize(n);
+  p.density.resize(n);
+  p.pressure.resize(n);
+  if (warm) s.warmStart.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t j = order[k];
+    const bool ghost = j >= owned.size();
+    const ParticleRecords& from = ghost ? ghosts : owned;
+    const std::size_t i = ghost ? j - owned.size() : j;
+    const float* v = from.of(i);
+    p.id[k] = from.id[i] | (ghost ? fluid::kGhostBit : 0u);
+    p.position[k] = vec4At(v);
+    p.velocity[k] = vec4At(v + 4);
+    p.acceleration[k] = vec4At(v + 8);
+    p.density[k] = v[12];
+    p.pressure[k] = v[13];
+    if (warm) s.warmStart[k] = vec4At(v + kFields);
+  }
+}
+
+std::vector<float> positionsOf(const ParticleRecords& r) {
+  std::vector<float> points(3 * r.size());
+  for (std::size_t i = 0; i < r.size(); ++i) std::copy(r.of(i), r.of(i) + 3, &points[3 * i]);
+  return points;
+}
+
+// The records in id order.
+ParticleRecords sortedById(const ParticleRecords& r) {
+  ParticleRecords out;
+  out.width = r.width;
+  out.id.reserve(r.size());
+  out.value.reserve(r.value.size());
+  for (std::uint32_t i : orderById(r.id)) out.append(r, i);
+  return out;
+}
+
+// The bounds of every process's particles.
+sim::Exchanged gridBounds(const Communicator& comm, const ParticleRecords& owned) {
+  Box mine;
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    const float* x = owned.of(i);
+    for (int c = 0; c < 3; ++c) {
+      mine.min[c] = mine.empty ? x[c] : std::min(mine.min[c], x[c]);
+      mine.max[c] = mine.empty ? x[c] : std::max(mine.max[c], x[c]);
+    }
+    mine.empty = false;
+  }
+  const std::vector<float> boxes =
+      comm.allgather({mine.min[0], mine.min[1], mine.min[2], mine.max[0], mine.max[1], mine.max[2],
+                      mine.empty ? 0.0f : 1.0f});
+  sim::Exchanged out;
+  for (std::size_t r = 0; r < boxes.size(); r += 7) {
+    const float* b = &boxes[r];
+    if (b[6] == 0.0f) continue;
+    const Vec3 lo{b[0], b[1], b[2]}, hi{b[3], b[4], b[5]};
+    out.gridLo = out.any ? Vec3{std::min(out.gridLo.x, lo.x), std::min(out.gridLo.y, lo.y),
+                                std::min(out.gridLo.z, lo.z)}
+                         : lo;
+    out.gridHi = out.any ? Vec3{std::max(out.gridHi.x, hi.x), std::max(out.gridHi.y, hi.y),
+                                std::max(out.gridHi.z, hi.z)}
+                         : hi;
+    out.any = true;
+  }
+  return out;
+}
+
+// A particle's cell as the grid pass finds it (fluid/build_grid.hpp).
+Int3 cellOf(const GridSpec& grid, const float* x) {
+  return clampToGrid(grid, cellCoordinate(grid, Vec3{x[0], x[1], x[2]}));
+}
+
+// The cells of a process's particles, as a box of cells; and whether a cell is next to it.
+struct CellRange {
+  Int3 lo{0, 0, 0}, hi{-1, -1, -1};
+  bool empty = true;
+  bool touches(Int3 c) const {
+    return !empty && c.x >= lo.x - 1 && c.x <= hi.x + 1 && c.y >= lo.y - 1 && c.y <= hi.y + 1 &&
+           c.z >= lo.z - 1 && c.z <= hi.z + 1;
+  }
+};
+
+// Every process's, by rank.
+std::vector<CellRange> cellRanges(const Communicator& comm, const ParticleRecords& owned,
+                                  const GridSpec& grid) {
+  CellRange mine;
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    const Int3 c = cellOf(grid, owned.of(i));
+    mine.lo = mine.empty ? c
+                         : Int3{std::min(mine.lo.x, c.x), std::min(mine.lo.y, c.y),
+                                std::min(mine.lo.z, c.z)};
+    mine.hi = mine.empty ? c
+                         : Int3{std::max(mine.hi.x, c.x), std::max(mine.hi.y, c.y),
+                                std::max(mine.hi.z, c.z)};
+    mine.empty = false;
+  }
+  // Cell coordinates are below 2^24: exact as floats.
+  const std::vector<float> all =
+      comm.allgather({float(mine.lo.x), float(mine.lo.y), float(mine.lo.z), float(mine.hi.x),
+                      float(mine.hi.y), float(mine.hi.z), mine.empty ? 1.0f : 0.0f});
+  std::vector<CellRange> out(std::size_t(comm.size()));
+  for (std::size_t r = 0; r < out.size(); ++r) {
+    const float* a = &all[7 * r];
+    out[r] = {Int3{int(a[0]), int(a[1]), int(a[2])}, Int3{int(a[3]), int(a[4]), int(a[5])},
+              a[6] != 0.0f};
+  }
+  return out;
+}
+
+// What the failure check may name: BadParticle::quantity travels as its index here.
+constexpr const char* kQuantities[] = {"density", "acceleration", "velocity",
+                                       "compression rho/rho0 - 1", "speed"};
+
+std::uint8_t quantityIndex(const char* quantity) {
+  for (std::uint8_t k = 0; k < std::size(kQuantities); ++k)
+    if (std::strcmp(kQuantities[k], quantity) == 0) return k;
+  return 0;
+}
+
+}  // namespace
+
+FluidDecomposition::FluidDecomposition(const Communicator& comm,
+                                       const DecompositionSettings& settings)
+    : comm_(comm), settings_(settings), partitioner_(comm, settings.method) {
+  stats_.ranks = comm.size();
+  stats_.imbalanceThreshold = settings.rebalanceAt;
+}
+
+sim::Exchanged FluidDecomposition::exchange(sim::HostFluidState& state,
+                                            const sim::ExchangeSettings& settings) {
+  const sim::HostParticles& p = state.particles;
+  const int ranks = comm_.size(), me = comm_.rank();
+  ParticleRecords held;
+  held.width = kFields + (state.warmStart.empty() ? 0 : kWarmStartFields);
+  std::uint64_t removed = 0;
+  for (std::size_t i = 0; i < p.id.size(); ++i) {
+    if (fluid::isGhost(p.id[i])) continue;
+    // Before the first partition every process holds every particle: each starts from a share.
+    if (!partitioned_ && int(p.id[i] % std::uint32_t(ranks)) != me) continue;
+    // Left the domain: the grid would remove it; counted once, by its owner.
+    if (!fluid::detail::insideBox(settings.domainMin, settings.domainMax, xyz(p.position[i]))) {
+      ++removed;
+      continue;
+    }
+    appendRecord(held, state, i);
+  }
+
+  // Where each belongs: the kept cuts, or new cuts when the load has drifted.
+  const std::vector<float> points = positionsOf(held);
+  std::vector<int> owner;
+  const bool cut = !partitioned_ || imbalance_ > settings_.rebalanceAt * balanceWhenCut_;
+  if (cut) {
+    if (partitioned_) ++stats_.repartitions;
+    partitioner_.assign(points, {});
+    partitioned_ = true;
+  }
+  // By the cuts alone, also right after cutting: Zoltan's own answer may split the particles
+  // on a cut otherwise than its cuts do, and the next step would move them across.
+  owner = partitioner_.owners(points);
+
+  // Only the particles that cross a cut travel.
+  ParticleRecords owned;
+  owned.width = held.width;
+  std::vector<std::vector<std::byte>> leaving(static_cast<std::size_t>(ranks));
+  std::uint64_t migrated = 0;
+  for (std::size_t i = 0; i < held.size(); ++i) {
+    if (owner[i] == me) {
+      owned.append(held, i);
+    } else {
+      packRecord(held, i, leaving[std::size_t(owner[i])]);
+      ++migrated;
+    }
+  }
+  for (const std::vector<std::byte>& bytes : comm_.exchange(leaving)) unpackRecords(bytes, owned);
+  owned = sortedById(owned);
+
+  // The grid spans every process's particles, as one process's would.
+  sim::Exchanged out = gridBounds(comm_, owned);
+
+  // The ghosts: every particle in a cell next to one of another process's goes there. Within
+  // reach would do for the sums, but the density pass walks whole rows of cells in batches, and
+  // a particle out of reach still takes its slot in a batch: the rows must be whole for the
+  // sums to group as one process's do.
+  const GridSpec grid = makeGrid(out.gridLo, out.gridHi, settings.reach);
+  const std::vector<CellRange> ranges = cellRanges(comm_, owned, grid);
+  std::vector<std::vector<std::byte>> halo(static_cast<std::size_t>(ranks));
+  sentIds_.assign(std::size_t(ranks), {});
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    const Int3 c = cellOf(grid, owned.of(i));
+    for (std::size_t r = 0; r < halo.size(); ++r) {
+      if (int(r) == me || !ranges[r].touches(c)) continue;
+      packRecord(owned, i, halo[r]);
+      sentIds_[r].push_back(owned.id[i]);
+    }
+  }
+  ParticleRecords ghosts;
+  ghosts.width = owned.width;
+  receivedIds_.assign(std::size_t(ranks), {});
+  const std::vector<std::vector<std::byte>> arrived = comm_.exchange(halo);
+  for (std::size_t r = 0; r < arrived.size(); ++r) {
+    const std::size_t before = ghosts.size();
+    unpackRecords(arrived[r], ghosts);
+    receivedIds_[r].assign(ghosts.id.begin() + std::ptrdiff_t(before), ghosts.id.end());
+  }
+
+  std::vector<std::uint32_t> joint = owned.id;
+  joint.insert(joint.end(), ghosts.id.begin(), ghosts.id.end());
+  writeState(state, owned, ghosts, orderById(joint));
+
+  out.removed = comm_.sum(removed);
+
+  imbalance_ = imbalance(comm_, double(owned.size()));
+  if (cut) balanceWhenCut_ = imbalance_;
+  const std::uint64_t stepMigrated = comm_.sum(migrated);
+  const double ghostShare =
+      comm_.sum(owned.size() ? double(ghosts.size()) / double(owned.size()) : 0.0) / ranks;
+  ++stats_.exchanges;
+  // The first exchange hands out the starting shares: not a migration.
+  if (stats_.exchanges > 1) migratedSum_ += double(stepMigrated);
+  ghostShareSum_ += ghostShare;
+  stats_.lastImbalance = imbalance_;
+  stats_.largestImbalance = std::max(stats_.largestImbalance, imbalance_);
+  return out;
+}
+
+sim::GhostDensities FluidDecomposition::ghostDensities(const sim::HostDensities& densities) {
+  const std::vector<std::uint32_t> byId = orderById(densities.id);
+  const auto idAt = [&](std::size_t k) { return densities.id[byId[k]] & ~fluid::kGhostBit; };
+  // Both lists are in id order: one walk each through the rows in id order.
+  const auto rowsOf = [&](const std::vector<std::uint32_t>& ids) {
+    std::vector<std::uint32_t> rows;
+    rows.reserve(ids.size());
+    std::size_t k = 0;
+    for (std::uint32_t id : ids) {
+      while (k < byId.size() && idAt(k) < id) ++k;
+      if (k == byId.size() || idAt(k) != id)
+        throw std::logic_error("ghost densities: particle " + std::to_string(id) +
+                               " of the last exchange is not held here");
+      rows.push_back(byId[k]);
+    }
+    return rows;
+  };
+  std::vector<std::vector<std::byte>> send(sentIds_.size());
+  for (std::size_t r = 0; r < send.size(); ++r) {
+    const std::vector<std::uint32_t> rows = rowsOf(sentIds_[r]);
+    send[r].resize(rows.size() * sizeof(float));
+    for (std::size_t k = 0; k < rows.size(); ++k)
+      std::memcpy(send[r].data() + k * sizeof(float), &densities.density[rows[k]], sizeof(float));
+  }
+  const std::vector<std::vector<std::byte>> arrived = comm_.exchange(send);
+  sim::GhostDensities out;
+  for (std::size_t r = 0; r < arrived.size(); ++r) {
+    const std::vector<std::uint32_t> rows = rowsOf(receivedIds_[r]);
+    if (arrived[r].size() != rows.size() * sizeof(float))
+      throw std::runtime_error("ghost densities: rank " + std::to_string(r) + " sent " +
+                               std::to_string(arrived[r].size()) + " bytes for " +
+                               std::to_string(rows.size()) + " ghosts");
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      float rho = 0.0f;
+      std::memcpy(&rho, arrived[r].data() + k * sizeof(float), sizeof rho);
+      out.rows.push_back(rows[k]);
+      out.density.push_back(rho);
+    }
+  }
+  return out;
+}
+
+fluid::StepMeasures FluidDecomposition::combine(const fluid::StepMeasures& local) {
+  const std::vector<float> all = comm_.allgather(
+      {local.maxSpeed, local.maxAcceleration, local.maxDensityError, local.finite ? 1.0f : 0.0f});
+  fluid::StepMeasures out;
+  for (std::size_t r = 0; r < all.size(); r += 4) {
+    out.maxSpeed = std::max(out.maxSpeed, all[r]);
+    out.maxAcceleration = std::max(out.maxAcceleration, all[r + 1]);
+    out.maxDensityError = std::max(out.maxDensityError, all[r + 2]);
+    out.finite = out.finite && all[r + 3] != 0.0f;
+  }
+  return out;
+}
+
+fluid::BadParticle FluidDecomposition::combine(const fluid::BadParticle& local) {
+  // found, pastBound, quantity, then id and value.
+  std::vector<std::byte> mine(3 + sizeof(std::uint32_t) + sizeof(float));
+  mine[0] = std::byte(local.found ? 1 : 0);
+  mine[1] = std::byte(local.pastBound ? 1 : 0);
+  mine[2] = std::byte(quantityIndex(local.quantity));
+  std::memcpy(mine.data() + 3, &local.id, sizeof local.id);
+  std::memcpy(mine.data() + 3 + sizeof local.id, &local.value, sizeof local.value);
+  const std::vector<std::vector<std::byte>> all =
+      comm_.exchange(std::vector<std::vector<std::byte>>(std::size_t(comm_.size()), mine));
+  fluid::BadParticle out;
+  for (const std::vector<std::byte>& b : all) {
+    if (b.size() != mine.size() || b[0] == std::byte(0)) continue;
+    fluid::BadParticle one;
+    one.found = true;
+    one.pastBound = b[1] != std::byte(0);
+    one.quantity =
+        kQuantities[std::min<std::size_t>(std::size_t(b[2]), std::size(kQuantities) - 1)];
+    std::memcpy(&one.id, b.data() + 3, sizeof one.id);
+    std::memcpy(&one.value, b.data() + 3 + sizeof one.id, sizeof one.value);
+    if (!out.found || one.id < out.id) out = one;
+  }
+  return out;
+}
+
+sim::DecompositionStats FluidDecomposition::stats() const {
+  sim::DecompositionStats out = stats_;
+  const double n = double(stats_.exchanges);
+  out.meanGhostShare = n > 0 ? ghostShareSum_ / n : 0.0;
+  out.meanMigratedPerStep = n > 1 ? migratedSum_ / (n - 1) : 0.0;
+  return out;
+}
+
+}  // namespace sph::distributed

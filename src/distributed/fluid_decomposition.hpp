@@ -1,0 +1,58 @@
+// The fluid across MPI processes (sim/decomposition.hpp, over this layer's partitioner and
+// exchanges): Zoltan's cuts give each process its part; a particle that crosses a cut moves
+// with all its fields and its id; copies of the particles within a support radius of another
+// part are sent there as ghosts each step, and their densities again after the density pass.
+// The cuts are kept from step to step and made again when the load has drifted: the busiest
+// process's share of the mean more than `rebalanceAt` times what it was right after the last
+// cuts.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "distributed/communicator.hpp"
+#include "distributed/partition.hpp"
+#include "sim/decomposition.hpp"
+
+namespace sph::distributed {
+
+struct DecompositionSettings {
+  PartitionMethod method = PartitionMethod::Rcb;
+  // How far the busiest process's particles over the mean may drift from their value right
+  // after the last partition before the cuts are made again (docs/distributed.md).
+  double rebalanceAt = 1.05;
+};
+
+class FluidDecomposition final : public sim::Decomposition {
+ public:
+  FluidDecomposition(const Communicator& comm, const DecompositionSettings& settings);
+
+  int rank() const override { return comm_.rank(); }
+  int size() const override { return comm_.size(); }
+  sim::Exchanged exchange(sim::HostFluidState& state,
+                          const sim::ExchangeSettings& settings) override;
+  sim::GhostDensities ghostDensities(const sim::HostDensities& densities) override;
+  fluid::StepMeasures combine(const fluid::StepMeasures& local) override;
+  fluid::BadParticle combine(const fluid::BadParticle& local) override;
+  std::uint64_t sum(std::uint64_t local) override { return comm_.sum(local); }
+  double sum(double local) override { return comm_.sum(local); }
+  double max(double local) override { return comm_.max(local); }
+  sim::DecompositionStats stats() const override;
+
+ private:
+  Communicator comm_;
+  DecompositionSettings settings_;
+  GeometricPartitioner partitioner_;
+  bool partitioned_ = false;
+  double imbalance_ = 1.0;  // of the last exchange
+  // Right after the last partition: a lattice's planes, each kept whole, may leave it above 1,
+  // and cutting again would give the same.
+  double balanceWhenCut_ = 1.0;
+  // The halo of the last exchange: the ids sent to each process and received from each, in id
+  // order, for the ghosts' densities.
+  std::vector<std::vector<std::uint32_t>> sentIds_, receivedIds_;
+  sim::DecompositionStats stats_;
+  double ghostShareSum_ = 0.0, migratedSum_ = 0.0;
+};
+
+}  // namespace sph::distributed
