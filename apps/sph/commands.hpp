@@ -31,6 +31,10 @@ struct RunOptions {
   bool surface = false;          // then `sph surface` it, with its defaults
   double checkpointEvery = 0.0;  // simulated seconds between checkpoints; 0: none
   std::string resume;            // a run's directory to continue from its newest checkpoint
+  // Under mpirun (sph/process_group.hpp): Zoltan's method, and the load's drift that
+  // partitions again.
+  std::string partition = "rcb";
+  double rebalanceAt = 1.05;
 };
 
 struct RenderOptions {

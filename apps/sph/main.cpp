@@ -41,6 +41,16 @@ int main(int argc, char** argv) {
   runCmd->add_option("--resume", run.resume,
                      "Continue the run in DIR from its newest checkpoint (a longer --duration "
                      "extends it)");
+  runCmd
+      ->add_option("--partition", run.partition,
+                   "Under mpirun: Zoltan's partition of the particles among the processes, rcb "
+                   "(boxes) or hsfc (a Hilbert curve) (default: rcb)")
+      ->check(CLI::IsMember({"rcb", "hsfc"}));
+  runCmd
+      ->add_option("--rebalance-at", run.rebalanceAt,
+                   "Under mpirun: partition again when the busiest process's particles over the "
+                   "mean have grown this many times since the last partition (default: 1.05)")
+      ->check(CLI::Range(1.0, 100.0));
   runCmd->add_flag("--render", run.render,
                    "Then render the run: DIR/images/*.png and DIR/video.mp4 (as sph render)");
   runCmd->add_flag("--surface", run.surface,

@@ -13,6 +13,7 @@
 #include "progress.hpp"
 #include "report.hpp"
 #include "run_output.hpp"
+#include "run_processes.hpp"
 #include "scene_engine.hpp"
 #include "sph/error.hpp"
 #include "sph/io/frame_writer.hpp"
@@ -37,8 +38,9 @@ struct RunRecord {
   nlohmann::json resumedFrom;   // the checkpoint, or null
 };
 
+// `final`: the statistics now (Simulation::stats, every process's in a run across several).
 void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecord& record,
-                  double startTime) {
+                  double startTime, const FrameStats& final, const RunProcesses& processes) {
   const double simulatedHere = sim.time() - startTime;
   const double steps = double(sim.stepCount() - record.firstStep);
   nlohmann::json summary = {
@@ -59,13 +61,14 @@ void writeSummary(const RunOutput& output, const Simulation& sim, const RunRecor
       {"real_time_factor", record.wallSeconds > 0 ? simulatedHere / record.wallSeconds : 0.0},
       {"resumed_from", record.resumedFrom},
       {"removed_count", sim.removedCount()},
-      {"clamped_count", sim.clampedCount()},
+      {"clamped_count", final.clampedCount},
       {"leaked_count", sim.leakedCount()},
       {"emitted_count", sim.emittedCount()},
       {"emitters", flowJson(sim.emitterStats())},
       {"outlets", flowJson(sim.outletStats())},
       {"objects", objectsJson(sim.objectStats())},
-      {"final", statsJson(sim.stats())},
+      {"final", statsJson(final)},
+      {"distributed", processes.summary()},
       {"scene", nlohmann::json::parse(sceneToJsonText(sim.scene()))}};
   io::writeFileAtomically(output.dir() / "summary.json",
                           [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
@@ -82,9 +85,64 @@ Scene sceneOf(const RunOptions& options, const std::optional<Checkpoint>& resume
   return scene;
 }
 
+// Another process failed and process 0 has said why: this one ends with the run's code.
+struct ProcessGroupFailed {
+  int code;
+};
+
+// Process 0 makes the run's directory (or says why it cannot); the others then find it made.
+void makeOutput(std::optional<RunOutput>& output, const std::string& dir, const Scene& scene,
+                bool force, const std::vector<std::string>& objectNames,
+                const RunProcesses& processes) {
+  const RunPiece piece{processes.rank(), processes.ranks()};
+  if (!processes.divided()) {
+    output.emplace(dir, scene.output.format, force, objectNames, piece);
+    return;
+  }
+  std::exception_ptr error;
+  bool badInput = false;
+  if (processes.lead()) {
+    try {
+      output.emplace(dir, scene.output.format, force, objectNames, piece);
+    } catch (const InputError&) {
+      error = std::current_exception();
+      badInput = true;
+    } catch (const std::exception&) {
+      error = std::current_exception();
+    }
+  }
+  const bool inputFailed = processes.any(badInput);
+  const bool failed = processes.any(error != nullptr);
+  if (error) std::rethrow_exception(error);
+  if (failed) throw ProcessGroupFailed{inputFailed ? kExitBadInput : kExitOutputFailed};
+  if (!processes.lead()) output.emplace(dir, scene.output.format, force, objectNames, piece);
+}
+
+int runScene(const RunOptions& options, RunProcesses& processes);
+
 }  // namespace
 
 int runCommand(const RunOptions& options) {
+  RunProcesses processes(options);
+  try {
+    return runScene(options, processes);
+  } catch (const ProcessGroupFailed& failed) {
+    return failed.code;
+  } catch (const std::exception&) {
+    // Every process meets bad input alike: process 0 says so, the others end with its code.
+    if (processes.lead()) throw;
+    return kExitBadInput;
+  }
+}
+
+namespace {
+
+int runScene(const RunOptions& options, RunProcesses& processes) {
+  if (processes.divided() && (!options.resume.empty() || options.checkpointEvery > 0.0))
+    throw InputError(
+        "run: --checkpoint-every and --resume: a run across processes keeps no checkpoints "
+        "yet; run it in one process to keep them");
+  const bool quiet = options.quiet || !processes.lead();
   setThreadCount(options.threads);
   std::optional<Checkpoint> resumed;
   if (!options.resume.empty()) resumed = readLatestCheckpoint(options.resume);
@@ -98,6 +156,7 @@ int runCommand(const RunOptions& options) {
                                                 : options.out;
   Simulation sim(scene, simulationOptions(options.backend, options.device));
   const std::unique_ptr<cli::SceneEngine> sceneEngine = cli::attachSceneEngine(scene, sim);
+  processes.distribute(sim);
   if (sceneEngine && (resumed || options.checkpointEvery > 0.0))
     throw InputError(scene.sourcePath +
                      ": object_engine.type: \"bullet\" runs keep no checkpoints (Bullet's "
@@ -118,13 +177,13 @@ int runCommand(const RunOptions& options) {
   if (resumed)
     outputs.emplace(dir, scene.output.format, objectNames, resumed->position, sim.stats());
   else
-    outputs.emplace(dir, scene.output.format, options.force, objectNames);
+    makeOutput(outputs, dir, scene, options.force, objectNames, processes);
   RunOutput& output = *outputs;
   // Checkpoints go on at the resumed run's interval unless asked otherwise.
   const double checkpointEvery = options.checkpointEvery > 0.0 ? options.checkpointEvery
                                  : resumed                     ? resumed->checkpointEvery
                                                                : 0.0;
-  if (!options.quiet) {
+  if (!quiet) {
     printCalibration(stdout, sim);
     if (std::string(sim.backendName()) == "cuda") {
       std::printf("  backend              cuda, device %d\n", options.device);
@@ -133,6 +192,9 @@ int runCommand(const RunOptions& options) {
     } else {
       std::printf("  backend              cpu, %d threads\n", threadCount());
     }
+    if (processes.divided())
+      std::printf("  processes            %d (mpirun), partition %s, again past %gx drift\n",
+                  processes.ranks(), options.partition.c_str(), options.rebalanceAt);
     std::printf("writing %s frames at %g per second to %s\n", formatName(scene.output.format),
                 scene.output.fps, output.dir().c_str());
     std::fflush(stdout);
@@ -146,7 +208,7 @@ int runCommand(const RunOptions& options) {
   if (resumed)
     record.resumedFrom = {
         {"checkpoint", resumed->file.string()}, {"time", startTime}, {"step", record.firstStep}};
-  Progress progress(endTime, !options.quiet);
+  Progress progress(endTime, !quiet);
   auto lastFrameWall = Clock::now();
   std::uint64_t lastFrameSteps = sim.stepCount();
   auto writeFrame = [&] {
@@ -180,8 +242,10 @@ int runCommand(const RunOptions& options) {
   const int firstFrame = resumed ? resumed->position.frame + 1 : 1;
   try {
     if (!resumed) {
-      output.writeBoundary(sim.boundaryFrame());
-      output.writeObjectSurfaces(sim.objectSurfaces());
+      if (processes.lead()) {
+        output.writeBoundary(sim.boundaryFrame());
+        output.writeObjectSurfaces(sim.objectSurfaces());
+      }
       writeFrame();
     }
     for (int frame = firstFrame; sim.time() < endTime; ++frame) {
@@ -209,11 +273,21 @@ int runCommand(const RunOptions& options) {
                       {"step", failure.step()},
                       {"particle", failure.particleId()},
                       {"quantity", failure.quantity()}};
-    writeSummary(output, sim, record, startTime);
+    // Every process fails at the same step (the failure check reads every process's).
+    const FrameStats final = sim.stats();
+    processes.barrier();  // every piece written
+    if (!processes.lead()) return kExitSimulationFailed;
+    writeSummary(output, sim, record, startTime, final, processes);
     std::fprintf(stderr, "error: %s\nthe frames and stats up to t = %g s are in %s\n",
                  failure.what(), sim.time(), output.dir().c_str());
     return kExitSimulationFailed;
   } catch (const OutputError& failure) {
+    if (processes.divided()) {
+      // This process's disk alone: the others would wait for it at the next step.
+      std::fprintf(stderr, "error: process %d: %s\nthe run stopped at t = %g s\n", processes.rank(),
+                   failure.what(), sim.time());
+      processes.abort(kExitOutputFailed);
+    }
     // The frames written are whole (each is renamed into place); say what happened in
     // summary.json if the disk still takes it.
     progress.finish(sim.time(), sim.stepCount());
@@ -221,7 +295,7 @@ int runCommand(const RunOptions& options) {
     record.failure = {{"message", failure.what()}, {"quantity", "output"}};
     bool summarised = true;
     try {
-      writeSummary(output, sim, record, startTime);
+      writeSummary(output, sim, record, startTime, sim.stats(), processes);
     } catch (const std::exception&) {
       summarised = false;
     }
@@ -232,9 +306,11 @@ int runCommand(const RunOptions& options) {
   output.finish();
   progress.finish(sim.time(), sim.stepCount());
   record.wallSeconds = secondsSince(start);
-  writeSummary(output, sim, record, startTime);
-  if (!options.quiet) {
-    const FrameStats last = sim.stats();
+  const FrameStats last = sim.stats();
+  processes.barrier();  // every piece written
+  if (!processes.lead()) return kExitOk;
+  writeSummary(output, sim, record, startTime, last, processes);
+  if (!quiet) {
     std::printf(
         "done: %llu steps, %.3f ms per step, %d frames; %llu fluid particles left, "
         "%llu removed, %llu leaked\n",
@@ -279,5 +355,7 @@ int runCommand(const RunOptions& options) {
   }
   return kExitOk;
 }
+
+}  // namespace
 
 }  // namespace sph::cli

@@ -42,8 +42,13 @@ bool holdsEarlierRun(const fs::path& dir) {
 }  // namespace
 
 RunOutput::RunOutput(fs::path dir, FrameFormat format, bool force,
-                     std::vector<std::string> objectNames)
-    : dir_(std::move(dir)), format_(format) {
+                     std::vector<std::string> objectNames, RunPiece piece)
+    : dir_(std::move(dir)), format_(format), piece_(piece) {
+  if (piece_.ranks > 1 && format_ != FrameFormat::Vtp && format_ != FrameFormat::None)
+    throw InputError(std::string("output.format: \"") + io::frameExtension(format_) +
+                     "\": a run across processes writes its frames in pieces, as vtp; expected "
+                     "\"vtp\" or \"none\"");
+  if (piece_.rank != 0) return;  // process 0 has made the directory
   if (holdsEarlierRun(dir_)) {
     if (!force)
       throw InputError(dir_.string() +
@@ -185,6 +190,10 @@ void RunOutput::writeQueued() {
 }
 
 void RunOutput::write(const ParticleFrame& frame, const FrameStats& stats) {
+  if (piece_.ranks > 1) {
+    writePiece(frame, stats);
+    return;
+  }
   if (format_ != FrameFormat::None) {
     char name[64];
     std::snprintf(name, sizeof name, "frame_%05d.%s", frames_, io::frameExtension(format_));
@@ -192,6 +201,31 @@ void RunOutput::write(const ParticleFrame& frame, const FrameStats& stats) {
     if (series_) series_->add(frame.time, std::string("frames/") + name);
   }
   stats_->append(stats);
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++frames_;
+}
+
+void RunOutput::writePiece(const ParticleFrame& frame, const FrameStats& stats) {
+  if (format_ == FrameFormat::Vtp) {
+    // A rank's piece, or (rank -1) the frame over them.
+    const auto named = [&](int rank) {
+      char name[64];
+      if (rank < 0)
+        std::snprintf(name, sizeof name, "frame_%05d.pvtp", frames_);
+      else
+        std::snprintf(name, sizeof name, "frame_%05d_%d.vtp", frames_, rank);
+      return std::string(name);
+    };
+    io::writeFrame(frame, format_, dir_ / "frames" / named(piece_.rank));
+    if (piece_.rank == 0) {
+      std::vector<std::string> pieces;
+      for (int r = 0; r < piece_.ranks; ++r) pieces.push_back(named(r));
+      const std::string whole = named(-1);
+      io::writeParallelFrame(pieces, /*torn=*/false, dir_ / "frames" / whole);
+      series_->add(frame.time, "frames/" + whole);
+    }
+  }
+  if (piece_.rank == 0) stats_->append(stats);
   std::lock_guard<std::mutex> lock(mutex_);
   ++frames_;
 }

@@ -26,12 +26,22 @@
 
 namespace sph::cli {
 
+// A process's share of a run across several (mpirun): each writes its particles of every frame
+// as a piece, DIR/frames/frame_NNNNN_R.vtp; process 0 writes the rest, the frame over the
+// pieces (frame_NNNNN.pvtp, one frame in ParaView), the series and the statistics.
+struct RunPiece {
+  int rank = 0;
+  int ranks = 1;
+};
+
 class RunOutput {
  public:
   // Throws InputError if `dir` holds an earlier run and `force` is false.
-  // `objectNames` give stats.csv columns of their own.
+  // `objectNames` give stats.csv columns of their own. A piece other than process 0's finds
+  // the directory as process 0 made it, and only writes its pieces; the run's frames are
+  // VTP.
   RunOutput(std::filesystem::path dir, FrameFormat format, bool force,
-            std::vector<std::string> objectNames = {});
+            std::vector<std::string> objectNames = {}, RunPiece piece = {});
 
   // A resumed run's: `dir` as the checkpoint at `position` left it. Frames after its frame, and
   // rows after those it counted, are removed (a run killed after the checkpoint wrote them;
@@ -66,9 +76,11 @@ class RunOutput {
   };
   void writeQueued();
   void write(const ParticleFrame& frame, const FrameStats& stats);
+  void writePiece(const ParticleFrame& frame, const FrameStats& stats);
 
   std::filesystem::path dir_;
   FrameFormat format_;
+  RunPiece piece_;
   std::optional<io::PvdSeries> series_;
   std::optional<io::StatsWriter> stats_;
   std::optional<io::ProbesWriter> probes_;

@@ -88,10 +88,10 @@ class Simulation {
   // vector removes it. Throws std::invalid_argument on a wrong size.
   void setExternalAcceleration(const std::vector<float>& byId);
   // Runs this simulation as one process of a run across several (MPI: every process builds the
-  // same scene and calls this with its part of the decomposition before the first step). From
-  // then on each process steps the particles it owns, with copies of its neighbours' within
-  // reach; its frames hold the particles it owns, its stats() every process's (a collective
-  // call, as step() is). Throws InputError naming the scene where it has what is
+  // same scene and calls this with its part of the decomposition before the first step; a
+  // collective call, as step() is). From then on each process steps the particles it owns,
+  // with copies of its neighbours' within reach; its frames hold the particles it owns, its
+  // stats() every process's (collective too). Throws InputError naming the scene where it has what is
   // not yet run across processes (DFSPH or PBF, objects, emitters, outlets, probes, periodic
   // faces), std::logic_error after the first step, std::invalid_argument on null. saveState and
   // setExternalAcceleration refuse a distributed run (std::logic_error).

@@ -168,7 +168,7 @@ FluidDecomposition::FluidDecomposition(const Communicator& comm,
                                        const DecompositionSettings& settings)
     : comm_(comm), settings_(settings), partitioner_(comm, settings.method) {
   stats_.ranks = comm.size();
-  stats_.imbalanceThreshold = settings.rebalanceAt;
+  stats_.rebalanceAt = settings.rebalanceAt;
 }
 
 sim::Exchanged FluidDecomposition::exchange(sim::HostFluidState& state,
@@ -348,8 +348,8 @@ fluid::BadParticle FluidDecomposition::combine(const fluid::BadParticle& local) 
   return out;
 }
 
-sim::DecompositionStats FluidDecomposition::stats() const {
-  sim::DecompositionStats out = stats_;
+DistributedStats FluidDecomposition::stats() const {
+  DistributedStats out = stats_;
   const double n = double(stats_.exchanges);
   out.meanGhostShare = n > 0 ? ghostShareSum_ / n : 0.0;
   out.meanMigratedPerStep = n > 1 ? migratedSum_ / (n - 1) : 0.0;

@@ -37,7 +37,7 @@ class FluidDecomposition final : public sim::Decomposition {
   std::uint64_t sum(std::uint64_t local) override { return comm_.sum(local); }
   double sum(double local) override { return comm_.sum(local); }
   double max(double local) override { return comm_.max(local); }
-  sim::DecompositionStats stats() const override;
+  DistributedStats stats() const override;
 
  private:
   Communicator comm_;
@@ -51,7 +51,7 @@ class FluidDecomposition final : public sim::Decomposition {
   // The halo of the last exchange: the ids sent to each process and received from each, in id
   // order, for the ghosts' densities.
   std::vector<std::vector<std::uint32_t>> sentIds_, receivedIds_;
-  sim::DecompositionStats stats_;
+  DistributedStats stats_;
   double ghostShareSum_ = 0.0, migratedSum_ = 0.0;
 };
 

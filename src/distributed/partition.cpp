@@ -91,12 +91,7 @@ GeometricPartitioner::GeometricPartitioner(const Communicator& comm, PartitionMe
   Zoltan_Set_Param(z, "RETURN_LISTS", "PARTS");
   // Within 1 % of the mean work: the step waits for the slowest rank.
   Zoltan_Set_Param(z, "IMBALANCE_TOL", "1.01");
-  if (method == PartitionMethod::Rcb) {
-    Zoltan_Set_Param(z, "RCB_REUSE", "1");
-    // A plane of particles on a cut (a lattice's, at the start) goes to one side whole: split,
-    // the half that moves first would cross back at once.
-    Zoltan_Set_Param(z, "RCB_RECTILINEAR_BLOCKS", "1");
-  }
+  if (method == PartitionMethod::Rcb) Zoltan_Set_Param(z, "RCB_REUSE", "1");
   Zoltan_Set_Param(z, "KEEP_CUTS", "1");  // owners() asks where a moved particle belongs
   Zoltan_Set_Num_Obj_Fn(z, objectCount, &impl_->query);
   Zoltan_Set_Obj_List_Fn(z, objectList, &impl_->query);

@@ -9,6 +9,7 @@
 
 #include "fluid/measure_step.hpp"
 #include "sim/fluid_engine.hpp"
+#include "sph/distributed_stats.hpp"
 
 namespace sph::sim {
 
@@ -30,18 +31,6 @@ struct Exchanged {
 struct GhostDensities {
   std::vector<std::uint32_t> rows;
   std::vector<float> density;
-};
-
-// What the exchanges moved, for summary.json: this process's part, and the run's.
-struct DecompositionStats {
-  int ranks = 1;
-  std::uint64_t exchanges = 0;
-  std::uint64_t repartitions = 0;  // full partitions after the first, past the threshold
-  double imbalanceThreshold = 0.0;
-  double lastImbalance = 1.0;  // busiest process's particles over the mean, last exchange
-  double largestImbalance = 1.0;
-  double meanGhostShare = 0.0;       // ghosts over owned particles, mean over processes and steps
-  double meanMigratedPerStep = 0.0;  // particles that changed process a step, over all
 };
 
 class Decomposition {
@@ -66,7 +55,7 @@ class Decomposition {
   virtual double sum(double local) = 0;
   virtual double max(double local) = 0;
 
-  virtual DecompositionStats stats() const = 0;
+  virtual DistributedStats stats() const = 0;
 };
 
 }  // namespace sph::sim

@@ -47,6 +47,12 @@ void Simulation::distribute(std::shared_ptr<sim::Decomposition> ranks) {
   if (s.params.periodic.axes != 0) refuse("the domain is periodic");
   s.ranks = std::move(ranks);
   s.stages = s.stageList();
+  // Divided from frame 0 on: each process keeps its share, with its ghosts and their densities.
+  const backend::ScopedThreadCount passThreads(s.threads);
+  s.exchangeParticles();
+  s.buildGrid();
+  s.sumDensity();
+  s.refreshGhosts();
 }
 
 }  // namespace sph

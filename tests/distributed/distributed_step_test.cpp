@@ -148,7 +148,7 @@ void expectSameRunAsOneProcess(const Scene& scene) {
   // Each process owns a share and holds ghosts: the run was divided, not copied.
   if (world.size() > 1) {
     EXPECT_LT(mine.size(), n);
-    const sim::DecompositionStats s = ranks->stats();
+    const DistributedStats s = ranks->stats();
     EXPECT_GT(s.meanGhostShare, 0.0);
     // The cuts are kept through most steps, and the load within a quarter of the mean (a
     // plane of this small lattice is 6 % of it, and a collapsing column moves planes fast).
