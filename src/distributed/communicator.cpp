@@ -84,6 +84,14 @@ std::vector<float> Communicator::allgather(const std::vector<float>& values) con
   return out;
 }
 
+std::vector<double> Communicator::gather(const std::vector<double>& values) const {
+  std::vector<double> out(values.size() * std::size_t(size_));
+  check(MPI_Allgather(values.data(), int(values.size()), MPI_DOUBLE, out.data(), int(values.size()),
+                      MPI_DOUBLE, comm_),
+        "MPI_Allgather");
+  return out;
+}
+
 std::vector<std::vector<std::byte>> Communicator::exchange(
     const std::vector<std::vector<std::byte>>& send) const {
   if (send.size() != std::size_t(size_))

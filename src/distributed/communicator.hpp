@@ -39,6 +39,8 @@ class Communicator {
   // Every rank's value, by rank.
   std::vector<double> gather(double value) const;
   std::vector<float> allgather(const std::vector<float>& values) const;  // the same count each
+  // Every rank's values (the same count each), by rank.
+  std::vector<double> gather(const std::vector<double>& values) const;
 
   // Sends `send[r]` to rank r (itself included) and returns what each rank sent here, by source.
   std::vector<std::vector<std::byte>> exchange(

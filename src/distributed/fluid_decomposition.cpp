@@ -4,7 +4,6 @@
 #include <cstring>
 #include <string>
 
-#include "distributed/id_order.hpp"
 #include "distributed/particle_exchange.hpp"
 #include "fluid/build_grid.hpp"
 #include "sph/core/grid.hpp"
@@ -18,28 +17,48 @@ namespace {
 constexpr int kFields = 14;
 constexpr int kWarmStartFields = 4;
 
-void appendRecord(ParticleRecords& out, const sim::HostFluidState& s, std::size_t i) {
+// The rows' records, in their order: the state's particle ids (ghost bit clear) and fields.
+ParticleRecords packRows(const sim::HostFluidState& s, const std::vector<std::uint32_t>& rows) {
   const sim::HostParticles& p = s.particles;
-  out.id.push_back(p.id[i] & ~fluid::kGhostBit);
-  const auto put = [&](const Vec4& v) { out.value.insert(out.value.end(), {v.x, v.y, v.z, v.w}); };
-  put(p.position[i]);
-  put(p.velocity[i]);
-  put(p.acceleration[i]);
-  out.value.push_back(p.density[i]);
-  out.value.push_back(p.pressure[i]);
-  if (!s.warmStart.empty()) put(s.warmStart[i]);
+  ParticleRecords out;
+  out.width = kFields + (s.warmStart.empty() ? 0 : kWarmStartFields);
+  out.id.resize(rows.size());
+  out.value.resize(rows.size() * std::size_t(out.width));
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const std::size_t i = rows[k];
+    out.id[k] = p.id[i] & ~fluid::kGhostBit;
+    float* v = out.value.data() + k * std::size_t(out.width);
+    std::memcpy(v, &p.position[i], sizeof(Vec4));
+    std::memcpy(v + 4, &p.velocity[i], sizeof(Vec4));
+    std::memcpy(v + 8, &p.acceleration[i], sizeof(Vec4));
+    v[12] = p.density[i];
+    v[13] = p.pressure[i];
+    if (!s.warmStart.empty()) std::memcpy(v + kFields, &s.warmStart[i], sizeof(Vec4));
+  }
+  return out;
 }
 
-Vec4 vec4At(const float* v) {
-  return Vec4{v[0], v[1], v[2], v[3]};
+// Keeps the records whose `stays` is set, in their order, moving each at most once.
+void keepOnly(ParticleRecords& r, const std::vector<int>& owner, int me) {
+  const std::size_t width = std::size_t(r.width);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    if (owner[i] != me) continue;
+    if (kept != i) {
+      r.id[kept] = r.id[i];
+      std::memcpy(r.value.data() + kept * width, r.of(i), width * sizeof(float));
+    }
+    ++kept;
+  }
+  r.id.resize(kept);
+  r.value.resize(kept * width);
 }
 
-// The records into the state's arrays, in the given order; ghosts (index >= owned.size() in
-// the joint numbering) with their ids marked.
-void writeState(sim::HostFluidState& s, const ParticleRecords& owned, const ParticleRecords& ghosts,
-                const std::vector<std::uint32_t>& order) {
+// The records into the state's arrays: the owned, then the ghosts with their ids marked.
+void writeState(sim::HostFluidState& s, const ParticleRecords& owned,
+                const ParticleRecords& ghosts) {
   sim::HostParticles& p = s.particles;
-  const std::size_t n = order.size();
+  const std::size_t n = owned.size() + ghosts.size();
   const bool warm = !s.warmStart.empty();
   p.id.resize(n);
   p.position.resize(n);
@@ -49,18 +68,17 @@ void writeState(sim::HostFluidState& s, const ParticleRecords& owned, const Part
   p.pressure.resize(n);
   if (warm) s.warmStart.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t j = order[k];
-    const bool ghost = j >= owned.size();
+    const bool ghost = k >= owned.size();
     const ParticleRecords& from = ghost ? ghosts : owned;
-    const std::size_t i = ghost ? j - owned.size() : j;
+    const std::size_t i = ghost ? k - owned.size() : k;
     const float* v = from.of(i);
     p.id[k] = from.id[i] | (ghost ? fluid::kGhostBit : 0u);
-    p.position[k] = vec4At(v);
-    p.velocity[k] = vec4At(v + 4);
-    p.acceleration[k] = vec4At(v + 8);
+    std::memcpy(&p.position[k], v, sizeof(Vec4));
+    std::memcpy(&p.velocity[k], v + 4, sizeof(Vec4));
+    std::memcpy(&p.acceleration[k], v + 8, sizeof(Vec4));
     p.density[k] = v[12];
     p.pressure[k] = v[13];
-    if (warm) s.warmStart[k] = vec4At(v + kFields);
+    if (warm) std::memcpy(&s.warmStart[k], v + kFields, sizeof(Vec4));
   }
 }
 
@@ -68,16 +86,6 @@ std::vector<float> positionsOf(const ParticleRecords& r) {
   std::vector<float> points(3 * r.size());
   for (std::size_t i = 0; i < r.size(); ++i) std::copy(r.of(i), r.of(i) + 3, &points[3 * i]);
   return points;
-}
-
-// The records in id order.
-ParticleRecords sortedById(const ParticleRecords& r) {
-  ParticleRecords out;
-  out.width = r.width;
-  out.id.reserve(r.size());
-  out.value.reserve(r.value.size());
-  for (std::uint32_t i : orderById(r.id)) out.append(r, i);
-  return out;
 }
 
 // The bounds of every process's particles.
@@ -125,12 +133,10 @@ struct CellRange {
   }
 };
 
-// Every process's, by rank.
-std::vector<CellRange> cellRanges(const Communicator& comm, const ParticleRecords& owned,
-                                  const GridSpec& grid) {
+// Every process's, by rank, from the cells of its particles.
+std::vector<CellRange> cellRanges(const Communicator& comm, const std::vector<Int3>& cells) {
   CellRange mine;
-  for (std::size_t i = 0; i < owned.size(); ++i) {
-    const Int3 c = cellOf(grid, owned.of(i));
+  for (const Int3& c : cells) {
     mine.lo = mine.empty ? c
                          : Int3{std::min(mine.lo.x, c.x), std::min(mine.lo.y, c.y),
                                 std::min(mine.lo.z, c.z)};
@@ -175,8 +181,8 @@ sim::Exchanged FluidDecomposition::exchange(sim::HostFluidState& state,
                                             const sim::ExchangeSettings& settings) {
   const sim::HostParticles& p = state.particles;
   const int ranks = comm_.size(), me = comm_.rank();
-  ParticleRecords held;
-  held.width = kFields + (state.warmStart.empty() ? 0 : kWarmStartFields);
+  std::vector<std::uint32_t> rows;
+  rows.reserve(p.id.size());
   std::uint64_t removed = 0;
   for (std::size_t i = 0; i < p.id.size(); ++i) {
     if (fluid::isGhost(p.id[i])) continue;
@@ -187,12 +193,12 @@ sim::Exchanged FluidDecomposition::exchange(sim::HostFluidState& state,
       ++removed;
       continue;
     }
-    appendRecord(held, state, i);
+    rows.push_back(std::uint32_t(i));
   }
+  ParticleRecords owned = packRows(state, rows);
 
   // Where each belongs: the kept cuts, or new cuts when the load has drifted.
-  const std::vector<float> points = positionsOf(held);
-  std::vector<int> owner;
+  const std::vector<float> points = positionsOf(owned);
   const bool cut = !partitioned_ || imbalance_ > settings_.rebalanceAt * balanceWhenCut_;
   if (cut) {
     if (partitioned_) ++stats_.repartitions;
@@ -201,23 +207,18 @@ sim::Exchanged FluidDecomposition::exchange(sim::HostFluidState& state,
   }
   // By the cuts alone, also right after cutting: Zoltan's own answer may split the particles
   // on a cut otherwise than its cuts do, and the next step would move them across.
-  owner = partitioner_.owners(points);
+  const std::vector<int> owner = partitioner_.owners(points);
 
   // Only the particles that cross a cut travel.
-  ParticleRecords owned;
-  owned.width = held.width;
   std::vector<std::vector<std::byte>> leaving(static_cast<std::size_t>(ranks));
   std::uint64_t migrated = 0;
-  for (std::size_t i = 0; i < held.size(); ++i) {
-    if (owner[i] == me) {
-      owned.append(held, i);
-    } else {
-      packRecord(held, i, leaving[std::size_t(owner[i])]);
+  for (std::size_t i = 0; i < owned.size(); ++i)
+    if (owner[i] != me) {
+      packRecord(owned, i, leaving[std::size_t(owner[i])]);
       ++migrated;
     }
-  }
+  if (migrated != 0) keepOnly(owned, owner, me);
   for (const std::vector<std::byte>& bytes : comm_.exchange(leaving)) unpackRecords(bytes, owned);
-  owned = sortedById(owned);
 
   // The grid spans every process's particles, as one process's would.
   sim::Exchanged out = gridBounds(comm_, owned);
@@ -227,41 +228,46 @@ sim::Exchanged FluidDecomposition::exchange(sim::HostFluidState& state,
   // a particle out of reach still takes its slot in a batch: the rows must be whole for the
   // sums to group as one process's do.
   const GridSpec grid = makeGrid(out.gridLo, out.gridHi, settings.reach);
-  const std::vector<CellRange> ranges = cellRanges(comm_, owned, grid);
+  std::vector<Int3> cells(owned.size());
+  for (std::size_t i = 0; i < owned.size(); ++i) cells[i] = cellOf(grid, owned.of(i));
+  const std::vector<CellRange> ranges = cellRanges(comm_, cells);
   std::vector<std::vector<std::byte>> halo(static_cast<std::size_t>(ranks));
-  sentIds_.assign(std::size_t(ranks), {});
-  for (std::size_t i = 0; i < owned.size(); ++i) {
-    const Int3 c = cellOf(grid, owned.of(i));
+  sentRows_.assign(std::size_t(ranks), {});
+  for (std::size_t i = 0; i < owned.size(); ++i)
     for (std::size_t r = 0; r < halo.size(); ++r) {
-      if (int(r) == me || !ranges[r].touches(c)) continue;
+      if (int(r) == me || !ranges[r].touches(cells[i])) continue;
       packRecord(owned, i, halo[r]);
-      sentIds_[r].push_back(owned.id[i]);
+      sentRows_[r].push_back(std::uint32_t(i));
     }
-  }
   ParticleRecords ghosts;
   ghosts.width = owned.width;
-  receivedIds_.assign(std::size_t(ranks), {});
   const std::vector<std::vector<std::byte>> arrived = comm_.exchange(halo);
+  ghostRows_.assign(std::size_t(ranks) + 1, std::uint32_t(owned.size()));
   for (std::size_t r = 0; r < arrived.size(); ++r) {
-    const std::size_t before = ghosts.size();
     unpackRecords(arrived[r], ghosts);
-    receivedIds_[r].assign(ghosts.id.begin() + std::ptrdiff_t(before), ghosts.id.end());
+    ghostRows_[r + 1] = std::uint32_t(owned.size() + ghosts.size());
   }
+  writeState(state, owned, ghosts);
+  uploaded_ = owned.size() + ghosts.size();
 
-  std::vector<std::uint32_t> joint = owned.id;
-  joint.insert(joint.end(), ghosts.id.begin(), ghosts.id.end());
-  writeState(state, owned, ghosts, orderById(joint));
-
-  out.removed = comm_.sum(removed);
-
-  imbalance_ = imbalance(comm_, double(owned.size()));
+  // The run's figures, in one collective: removed, migrated, owned, ghosts over owned.
+  const std::vector<double> all = comm_.gather(
+      std::vector<double>{double(removed), double(migrated), double(owned.size()),
+                          owned.size() ? double(ghosts.size()) / double(owned.size()) : 0.0});
+  double totalRemoved = 0, stepMigrated = 0, totalOwned = 0, busiest = 0, ghostShare = 0;
+  for (std::size_t k = 0; k < all.size(); k += 4) {
+    totalRemoved += all[k];
+    stepMigrated += all[k + 1];
+    totalOwned += all[k + 2];
+    busiest = std::max(busiest, all[k + 2]);
+    ghostShare += all[k + 3] / ranks;
+  }
+  out.removed = std::uint64_t(totalRemoved);
+  imbalance_ = totalOwned > 0 ? busiest * ranks / totalOwned : 1.0;
   if (cut) balanceWhenCut_ = imbalance_;
-  const std::uint64_t stepMigrated = comm_.sum(migrated);
-  const double ghostShare =
-      comm_.sum(owned.size() ? double(ghosts.size()) / double(owned.size()) : 0.0) / ranks;
   ++stats_.exchanges;
   // The first exchange hands out the starting shares: not a migration.
-  if (stats_.exchanges > 1) migratedSum_ += double(stepMigrated);
+  if (stats_.exchanges > 1) migratedSum_ += stepMigrated;
   ghostShareSum_ += ghostShare;
   stats_.lastImbalance = imbalance_;
   stats_.largestImbalance = std::max(stats_.largestImbalance, imbalance_);
@@ -269,41 +275,35 @@ sim::Exchanged FluidDecomposition::exchange(sim::HostFluidState& state,
 }
 
 sim::GhostDensities FluidDecomposition::ghostDensities(const sim::HostDensities& densities) {
-  const std::vector<std::uint32_t> byId = orderById(densities.id);
-  const auto idAt = [&](std::size_t k) { return densities.id[byId[k]] & ~fluid::kGhostBit; };
-  // Both lists are in id order: one walk each through the rows in id order.
-  const auto rowsOf = [&](const std::vector<std::uint32_t>& ids) {
-    std::vector<std::uint32_t> rows;
-    rows.reserve(ids.size());
-    std::size_t k = 0;
-    for (std::uint32_t id : ids) {
-      while (k < byId.size() && idAt(k) < id) ++k;
-      if (k == byId.size() || idAt(k) != id)
-        throw std::logic_error("ghost densities: particle " + std::to_string(id) +
-                               " of the last exchange is not held here");
-      rows.push_back(byId[k]);
-    }
-    return rows;
-  };
-  std::vector<std::vector<std::byte>> send(sentIds_.size());
+  const std::vector<std::uint32_t>& order = densities.gridOrder;
+  if (order.size() != uploaded_ || densities.density.size() != uploaded_)
+    throw std::logic_error("ghost densities: " + std::to_string(order.size()) +
+                           " rows after the grid, " + std::to_string(uploaded_) +
+                           " after the last exchange");
+  // Where the grid put each row of the state the exchange gave.
+  std::vector<std::uint32_t> rowNow(order.size());
+  for (std::size_t j = 0; j < order.size(); ++j) rowNow[order[j]] = std::uint32_t(j);
+  std::vector<std::vector<std::byte>> send(sentRows_.size());
   for (std::size_t r = 0; r < send.size(); ++r) {
-    const std::vector<std::uint32_t> rows = rowsOf(sentIds_[r]);
-    send[r].resize(rows.size() * sizeof(float));
-    for (std::size_t k = 0; k < rows.size(); ++k)
-      std::memcpy(send[r].data() + k * sizeof(float), &densities.density[rows[k]], sizeof(float));
+    send[r].resize(sentRows_[r].size() * sizeof(float));
+    for (std::size_t k = 0; k < sentRows_[r].size(); ++k)
+      std::memcpy(send[r].data() + k * sizeof(float), &densities.density[rowNow[sentRows_[r][k]]],
+                  sizeof(float));
   }
   const std::vector<std::vector<std::byte>> arrived = comm_.exchange(send);
   sim::GhostDensities out;
+  out.rows.reserve(uploaded_ - ghostRows_.front());
+  out.density.reserve(uploaded_ - ghostRows_.front());
   for (std::size_t r = 0; r < arrived.size(); ++r) {
-    const std::vector<std::uint32_t> rows = rowsOf(receivedIds_[r]);
-    if (arrived[r].size() != rows.size() * sizeof(float))
+    const std::size_t count = ghostRows_[r + 1] - ghostRows_[r];
+    if (arrived[r].size() != count * sizeof(float))
       throw std::runtime_error("ghost densities: rank " + std::to_string(r) + " sent " +
                                std::to_string(arrived[r].size()) + " bytes for " +
-                               std::to_string(rows.size()) + " ghosts");
-    for (std::size_t k = 0; k < rows.size(); ++k) {
+                               std::to_string(count) + " ghosts");
+    for (std::size_t k = 0; k < count; ++k) {
       float rho = 0.0f;
       std::memcpy(&rho, arrived[r].data() + k * sizeof(float), sizeof rho);
-      out.rows.push_back(rows[k]);
+      out.rows.push_back(rowNow[ghostRows_[r] + k]);
       out.density.push_back(rho);
     }
   }

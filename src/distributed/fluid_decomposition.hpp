@@ -48,9 +48,11 @@ class FluidDecomposition final : public sim::Decomposition {
   // Right after the last partition: a lattice's planes, each kept whole, may leave it above 1,
   // and cutting again would give the same.
   double balanceWhenCut_ = 1.0;
-  // The halo of the last exchange: the ids sent to each process and received from each, in id
-  // order, for the ghosts' densities.
-  std::vector<std::vector<std::uint32_t>> sentIds_, receivedIds_;
+  // The halo of the last exchange, by the rows of the state it gave: those of the particles sent
+  // to each process, and each process's ghosts, rows ghostRows_[r] .. ghostRows_[r + 1].
+  std::vector<std::vector<std::uint32_t>> sentRows_;
+  std::vector<std::uint32_t> ghostRows_;
+  std::size_t uploaded_ = 0;
   DistributedStats stats_;
   double ghostShareSum_ = 0.0, migratedSum_ = 0.0;
 };

@@ -58,6 +58,26 @@ SPH_HD Bounds merge(const Bounds& a, const Bounds& b) {
                 Vec3{higher(a.hi.x, b.hi.x), higher(a.hi.y, b.hi.y), higher(a.hi.z, b.hi.z)}, true};
 }
 
+// Each cell's particles in id order (a distributed run's ghost bit aside): an insertion sort of
+// each cell's slice of `order`, a few particles each.
+template <class B>
+void orderCellsById(FluidParticles<B>& fluid, const Grid<B>& grid) {
+  const std::uint32_t* id = fluid.id.data();
+  std::uint32_t* order = fluid.order.data();
+  const std::uint32_t* start = grid.cellStart.data();
+  B::forEach(
+      grid.spec.cellCount, SPH_LAMBDA(std::size_t c) {
+        const std::uint32_t first = start[c], end = start[c + 1];
+        for (std::uint32_t k = first + 1; k < end; ++k) {
+          const std::uint32_t row = order[k];
+          const std::uint32_t key = id[row] & ~kGhostBit;
+          std::uint32_t j = k;
+          for (; j > first && (id[order[j - 1]] & ~kGhostBit) > key; --j) order[j] = order[j - 1];
+          order[j] = row;
+        }
+      });
+}
+
 }  // namespace detail
 
 // How many particles each outlet holds now (buildGrid removes them).
@@ -92,8 +112,8 @@ std::size_t buildGrid(FluidParticles<B>& fluid, Grid<B>& grid, const DomainParam
       },
       SPH_LAMBDA(const detail::Bounds& a, const detail::Bounds& b) { return detail::merge(a, b); });
   const Periodicity& periodic = domain.periodic;
-  const Vec3 lo = grid.boundsGiven ? grid.givenLo : bounds.lo;
-  const Vec3 hi = grid.boundsGiven ? grid.givenHi : bounds.hi;
+  const Vec3 lo = grid.shared ? grid.sharedLo : bounds.lo;
+  const Vec3 hi = grid.shared ? grid.sharedHi : bounds.hi;
   grid.spec = bounds.any
                   ? makePeriodicGrid(lo, hi, grid.cellSize, periodic.axes, periodic.lo, periodic.hi)
                   : makeGrid(domain.min, domain.min, grid.cellSize);
@@ -112,6 +132,7 @@ std::size_t buildGrid(FluidParticles<B>& fluid, Grid<B>& grid, const DomainParam
   B::countingSort(cell, n, outsideBin + 1, fluid.order.data(), grid.cellStart.data(),
                   grid.sortScratch);
   const std::size_t kept = B::read(grid.cellStart.data() + outsideBin);
+  if (grid.shared) detail::orderCellsById(fluid, grid);
 
   B::gather(fluid.position.data(), fluid.order.data(), kept, fluid.scratch4.data());
   fluid.position.swap(fluid.scratch4);

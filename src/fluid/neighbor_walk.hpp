@@ -1,5 +1,7 @@
 // The one walk of the passes that read a particle's neighbours after the density pass: the
-// forces, the continuity density and the incompressible solver's passes. It walks the neighbour
+// forces, the continuity density and the incompressible solver's passes. A distributed run's
+// ghosts (particles.hpp) are neighbours here and never walked themselves: their owners compute
+// them, the density pass included. It walks the neighbour
 // lists of the density pass (the cells for a particle with too many), reading each neighbour
 // from 8-float records (particles.hpp), one neighbour at a time (the GPU, and the CPU's
 // reference) or a SIMD batch at a time (the CPU). A pass is a struct with
@@ -66,8 +68,10 @@ void walkOneAtATime(const FluidParticles<B>& fluid, const Grid<B>& grid,
   const Vec4* object = objects.position.data();
   const Vec4* objectVelocity = objects.velocity.data();
   const float h2 = kernels.h2;
+  const std::uint32_t* id = fluid.id.data();
   B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
+        if (isGhost(id[i])) return;  // its owner computes it
         const float* ri = records + kRecordFields * i;
         const Vec3 xi{ri[0], ri[1], ri[2]};
         const bool seam = nearSeam(periodic, xi);
@@ -159,7 +163,9 @@ void walkBatched(const FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>
   const Vec4* objectVelocity = objects.velocity.data();  // padded with zeros
   const float h2 = kernels.h2;
   const FloatBatch h2Batch(h2), zero(0.0f);
+  const std::uint32_t* id = fluid.id.data();
   CpuBackend::forEach(fluid.count, [=](std::size_t i) {
+    if (isGhost(id[i])) return;  // its owner computes it
     const float* ri = records + kRecordFields * i;
     const Vec3 xs{ri[0], ri[1], ri[2]};
     const BatchVec3 xi = broadcast(xs);
@@ -248,8 +254,14 @@ void searchOneAtATime(FluidParticles<B>& fluid, const Grid<B>& grid,
   const std::uint32_t stride = fluid.neighborStride;
   std::uint32_t* neighbors = fluid.neighbors.data();
   std::uint32_t* neighborCount = fluid.neighborCount.data();
+  const std::uint32_t* id = fluid.id.data();
   B::forEach(
       fluid.count, SPH_LAMBDA(std::size_t i) {
+        // A ghost's owner computes it; it lists no neighbours, so no pass walks stale rows.
+        if (isGhost(id[i])) {
+          neighborCount[i] = 0;
+          return;
+        }
         const Vec3 xi = xyz(position[i]);
         const bool seam = nearSeam(periodic, xi);
         auto sum = pass.template start<float>(i);
@@ -309,8 +321,14 @@ void searchBatched(FluidParticles<CpuBackend>& fluid, const Grid<CpuBackend>& gr
   std::uint32_t* neighbors = fluid.neighbors.data();
   std::uint32_t* neighborCount = fluid.neighborCount.data();
   const std::uint32_t padding = std::uint32_t(n);
+  const std::uint32_t* id = fluid.id.data();
 
   CpuBackend::forEach(n, [=](std::size_t i) {
+    // A ghost's owner computes it; it lists no neighbours, so no pass walks stale rows.
+    if (isGhost(id[i])) {
+      neighborCount[i] = 0;
+      return;
+    }
     const FloatBatch lane = laneNumbers();
     const Vec3 xs{x[i], y[i], z[i]};
     const BatchVec3 xi = broadcast(xs);

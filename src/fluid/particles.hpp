@@ -123,11 +123,11 @@ struct BoundaryParticles {
 template <class B>
 struct Grid {
   float cellSize = 0.0f;  // h
-  // Where given (a distributed run: the bounds of every process's particles), the grid spans
-  // these instead of this process's particles, so that every process sorts a particle into
-  // the same cell as one process would.
-  bool boundsGiven = false;
-  Vec3 givenLo{0, 0, 0}, givenHi{0, 0, 0};
+  // Shared by the processes of a distributed run: the grid spans the bounds of every process's
+  // particles (not this one's), and lists each cell's particles in id order (not as the last
+  // step left them), so that every process sums a particle's neighbours as one process would.
+  bool shared = false;
+  Vec3 sharedLo{0, 0, 0}, sharedHi{0, 0, 0};
   GridSpec spec;
   typename B::template Buffer<std::uint32_t> cellStart;  // cellCount + 2
   typename B::SortScratch sortScratch;

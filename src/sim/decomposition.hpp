@@ -22,7 +22,7 @@ struct ExchangeSettings {
 // What an exchange did, the same on every process.
 struct Exchanged {
   std::uint64_t removed = 0;  // particles that left the domain, over all processes
-  // The bounds of every process's particles, for the grid (FluidStages::setGridBounds).
+  // The bounds of every process's particles, for the grid (FluidStages::shareGrid).
   Vec3 gridLo{0, 0, 0}, gridHi{0, 0, 0};
   bool any = false;  // a particle is left anywhere
 };
@@ -40,11 +40,11 @@ class Decomposition {
   virtual int size() const = 0;
 
   // Before the grid: `state` holds this process's particles as its engine has them (ghosts
-  // marked, fluid::isGhost); afterwards, the particles it owns now and the ghosts of the others'
-  // within reach, in id order (ghost bit aside), which keeps the order of every cell's particles
-  // the same on any number of processes. Collective.
+  // marked, fluid::isGhost); afterwards, the particles it owns now, then the ghosts of the
+  // others' next to its own. Collective.
   virtual Exchanged exchange(HostFluidState& state, const ExchangeSettings& settings) = 0;
-  // After the density pass: the ghosts' rows in `densities` and their owners' values. Collective.
+  // After the grid of the state the last exchange gave and the density pass: the ghosts' rows
+  // now and their owners' values. Collective.
   virtual GhostDensities ghostDensities(const HostDensities& densities) = 0;
 
   // Every process gets the same answer. Collective.

@@ -296,10 +296,10 @@ class EngineImpl final : public FluidEngine {
 
   void setParameters(const fluid::FluidParameters& params) override { params_ = params; }
 
-  void setGridBounds(Vec3 lo, Vec3 hi) override {
-    grid_.boundsGiven = true;
-    grid_.givenLo = lo;
-    grid_.givenHi = hi;
+  void shareGrid(Vec3 lo, Vec3 hi) override {
+    grid_.shared = true;
+    grid_.sharedLo = lo;
+    grid_.sharedHi = hi;
   }
   void overwriteDensity(const std::vector<std::uint32_t>& rows,
                         const std::vector<float>& density) override {
@@ -308,10 +308,10 @@ class EngineImpl final : public FluidEngine {
   HostDensities downloadDensities() const override {
     const std::size_t n = fluid_.count;
     HostDensities out;
-    out.id.resize(n);
     out.density.resize(n);
-    B::download(fluid_.id, out.id.data(), n);
+    out.gridOrder.resize(n);
     B::download(fluid_.density, out.density.data(), n);
+    B::download(fluid_.order, out.gridOrder.data(), n);
     return out;
   }
 

@@ -19,7 +19,7 @@ void Simulation::Impl::exchangeParticles() {
   const sim::Exchanged e = ranks->exchange(state, settings);
   counts.removed += e.removed;
   engine->uploadState(state);
-  if (e.any) engine->setGridBounds(e.gridLo, e.gridHi);
+  if (e.any) engine->shareGrid(e.gridLo, e.gridHi);
 }
 
 void Simulation::Impl::refreshGhosts() {

@@ -74,10 +74,12 @@ struct HostFluidState {
   bool densityIsState = false;
 };
 
-// The density pass's result, in the engine's order (a distributed run's ghost refresh).
+// A distributed run's ghost refresh: the density pass's result in the engine's order, and
+// where the last buildGrid took each row from: row j held, before it, row gridOrder[j] of the
+// state as uploaded.
 struct HostDensities {
-  std::vector<std::uint32_t> id;
   std::vector<float> density;
+  std::vector<std::uint32_t> gridOrder;
 };
 
 struct HostWalls {
@@ -123,10 +125,11 @@ class FluidStages {
   virtual void setExternalAcceleration(const std::vector<Vec4>& byId) = 0;
   // New values for the next steps (Simulation::setLiveParameters); the particles stay.
   virtual void setParameters(const fluid::FluidParameters& params) = 0;
-  // A distributed run (sim/exchange_particles.cpp): from the next buildGrid on, the grid spans
-  // [lo, hi], the bounds of every process's particles; and after the density pass, the rows
-  // of ghosts take the density their owners computed (pressure following).
-  virtual void setGridBounds(Vec3 lo, Vec3 hi) = 0;
+  // A distributed run (sim/exchange_particles.cpp): from the next buildGrid on, the grid is
+  // shared by the processes (fluid::Grid::shared), spanning [lo, hi], the bounds of every
+  // process's particles; and after the density pass, the rows of ghosts take the density
+  // their owners computed (pressure following).
+  virtual void shareGrid(Vec3 lo, Vec3 hi) = 0;
   virtual void overwriteDensity(const std::vector<std::uint32_t>& rows,
                                 const std::vector<float>& density) = 0;
 };
