@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "commands.hpp"
+#include "run_processes.hpp"
 #include "sph/devices.hpp"
 #include "sph/threads.hpp"
 
@@ -46,6 +47,10 @@ int infoCommand() {
   } else {
     std::printf("  cuda  built (--backend cuda, or auto when a GPU is present)\n");
   }
+  std::printf("across processes:\n");
+  std::printf("  mpi   %s\n", RunProcesses::built()
+                                  ? "built (mpirun -np N sph run; OpenMPI, Zoltan)"
+                                  : "not built (SPH_WITH_MPI=OFF or OpenMPI, Zoltan missing)");
   std::printf("graphics:\n");
   std::printf("  render  %s\n", rendererBuilt()
                                     ? "built (sph render, sph run --render; EGL offscreen)"

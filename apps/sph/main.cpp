@@ -24,7 +24,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"cpu", "cuda", "auto"}));
   runCmd->add_option("--threads", run.threads, "CPU threads, at most 1024 (default: all)")
       ->check(CLI::Range(0, kMostThreads));
-  runCmd->add_option("--device", run.device, "CUDA device index (see sph info)")
+  runCmd
+      ->add_option("--device", run.device,
+                   "CUDA device index (see sph info); under mpirun, each process takes the one its "
+                   "rank on its machine further on")
       ->check(CLI::NonNegativeNumber);
   runCmd->add_option("--duration", duration, "Simulated seconds (time.duration)");
   runCmd->add_option("--fps", fps, "Output frames per simulated second (output.fps)");

@@ -154,7 +154,8 @@ int runScene(const RunOptions& options, RunProcesses& processes) {
   const std::string dir = resumed               ? options.resume
                           : options.out.empty() ? "out/" + name
                                                 : options.out;
-  Simulation sim(scene, simulationOptions(options.backend, options.device));
+  const int device = processes.device(options.device);
+  Simulation sim(scene, simulationOptions(options.backend, device));
   const std::unique_ptr<cli::SceneEngine> sceneEngine = cli::attachSceneEngine(scene, sim);
   processes.distribute(sim);
   if (sceneEngine && (resumed || options.checkpointEvery > 0.0))
@@ -186,7 +187,8 @@ int runScene(const RunOptions& options, RunProcesses& processes) {
   if (!quiet) {
     printCalibration(stdout, sim);
     if (std::string(sim.backendName()) == "cuda") {
-      std::printf("  backend              cuda, device %d\n", options.device);
+      std::printf("  backend              cuda, device %d%s\n", device,
+                  processes.divided() ? " (process 0's; each its own)" : "");
       // The 2021 CUDA SPH tutorial's memory report: what the GPU holds and has free.
       printGpus(stdout);
     } else {

@@ -20,9 +20,15 @@ class RunProcesses {
   RunProcesses(const RunProcesses&) = delete;
   RunProcesses& operator=(const RunProcesses&) = delete;
 
+  // Whether this build runs across processes (MPI).
+  static bool built();
   bool divided() const { return ranks() > 1; }
   int rank() const;
   int ranks() const;
+  // The GPU this process runs on: `device` alone; under mpirun, the device that many further on
+  // by its rank on its machine, round the machine's GPUs (two processes share one where it has
+  // one).
+  int device(int device) const;
   // Process 0 speaks for the run: its progress, its messages, its summary.
   bool lead() const { return rank() == 0; }
   bool any(bool mine) const;  // collective

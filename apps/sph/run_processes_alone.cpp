@@ -17,11 +17,17 @@ RunProcesses::RunProcesses(const RunOptions&) {
         "process");
 }
 RunProcesses::~RunProcesses() = default;
+bool RunProcesses::built() {
+  return false;
+}
 int RunProcesses::rank() const {
   return 0;
 }
 int RunProcesses::ranks() const {
   return 1;
+}
+int RunProcesses::device(int device) const {
+  return device;
 }
 bool RunProcesses::any(bool mine) const {
   return mine;

@@ -1,6 +1,7 @@
 #include <optional>
 
 #include "run_processes.hpp"
+#include "sph/devices.hpp"
 #include "sph/process_group.hpp"
 
 namespace sph::cli {
@@ -18,11 +19,21 @@ RunProcesses::RunProcesses(const RunOptions& options) : impl_(std::make_unique<I
 
 RunProcesses::~RunProcesses() = default;
 
+bool RunProcesses::built() {
+  return true;
+}
+
 int RunProcesses::rank() const {
   return impl_->group ? impl_->group->rank() : 0;
 }
 int RunProcesses::ranks() const {
   return impl_->group ? impl_->group->size() : 1;
+}
+int RunProcesses::device(int device) const {
+  if (!divided()) return device;
+  const int gpus = int(queryGpus().devices.size());
+  const int local = device + impl_->group->localRank();
+  return gpus > 0 ? local % gpus : local;
 }
 bool RunProcesses::any(bool mine) const {
   return impl_->group ? impl_->group->any(mine) : mine;

@@ -90,18 +90,16 @@ std::vector<float> positionsOf(const ParticleRecords& r) {
 
 // The bounds of every process's particles.
 sim::Exchanged gridBounds(const Communicator& comm, const ParticleRecords& owned) {
-  Box mine;
-  for (std::size_t i = 0; i < owned.size(); ++i) {
-    const float* x = owned.of(i);
+  // This process's: min x, y, z, max x, y, z, and 1 where it owns any.
+  std::vector<float> mine(7, 0.0f);
+  for (std::size_t i = 0; i < owned.size(); ++i)
     for (int c = 0; c < 3; ++c) {
-      mine.min[c] = mine.empty ? x[c] : std::min(mine.min[c], x[c]);
-      mine.max[c] = mine.empty ? x[c] : std::max(mine.max[c], x[c]);
+      const float x = owned.of(i)[c];
+      mine[c] = i == 0 ? x : std::min(mine[c], x);
+      mine[3 + c] = i == 0 ? x : std::max(mine[3 + c], x);
     }
-    mine.empty = false;
-  }
-  const std::vector<float> boxes =
-      comm.allgather({mine.min[0], mine.min[1], mine.min[2], mine.max[0], mine.max[1], mine.max[2],
-                      mine.empty ? 0.0f : 1.0f});
+  mine[6] = owned.size() != 0 ? 1.0f : 0.0f;
+  const std::vector<float> boxes = comm.allgather(mine);
   sim::Exchanged out;
   for (std::size_t r = 0; r < boxes.size(); r += 7) {
     const float* b = &boxes[r];

@@ -28,18 +28,11 @@ inline void fill(std::uint32_t id, float* v) {
   std::memcpy(&v[4], &id, sizeof id);
 }
 
-// Moves a particle's position as the tests move them: the upper half of the block along x. An
-// addition alone, rounded once wherever it is compiled (a product beside it may be fused).
-inline void shear(float* p) {
-  if (p[1] > 0.115f) p[0] += 0.25f;
-}
-
-// Whether a record's values are those its id was given, sheared once when `sheared`: bit for
-// bit, as the transport copies them.
-inline bool intact(const ParticleRecords& r, std::size_t i, bool sheared = false) {
+// Whether a record's values are those its id was given: bit for bit, as the transport copies
+// them.
+inline bool intact(const ParticleRecords& r, std::size_t i) {
   float expected[kWidth];
   fill(r.id[i], expected);
-  if (sheared) shear(expected);
   return std::memcmp(expected, r.of(i), sizeof expected) == 0;
 }
 
@@ -59,17 +52,6 @@ inline std::vector<float> positions(const ParticleRecords& r) {
   std::vector<float> p;
   for (std::size_t i = 0; i < r.size(); ++i) p.insert(p.end(), r.of(i), r.of(i) + 3);
   return p;
-}
-
-// Every rank's records, on every rank, in id order.
-inline ParticleRecords everyone(const Communicator& comm, const ParticleRecords& mine) {
-  std::vector<std::uint32_t> all(mine.size());
-  for (std::size_t i = 0; i < mine.size(); ++i) all[i] = std::uint32_t(i);
-  HaloPlan toAll;
-  toAll.send.assign(std::size_t(comm.size()), all);
-  ParticleRecords out = exchangeHalo(comm, toAll, mine);
-  out.sortById();
-  return out;
 }
 
 }  // namespace sph::distributed::test
