@@ -91,8 +91,8 @@ class Simulation {
   // same scene and calls this with its part of the decomposition before the first step; a
   // collective call, as step() is). From then on each process steps the particles it owns,
   // with copies of its neighbours' within reach; its frames hold the particles it owns, its
-  // stats() every process's (collective too). Throws InputError naming the scene where it has what is
-  // not yet run across processes (DFSPH or PBF, objects, emitters, outlets, probes, periodic
+  // stats() every process's (collective too). Throws InputError naming the scene where it has what
+  // is not yet run across processes (DFSPH or PBF, objects, emitters, outlets, probes, periodic
   // faces), std::logic_error after the first step, std::invalid_argument on null. saveState and
   // setExternalAcceleration refuse a distributed run (std::logic_error).
   void distribute(std::shared_ptr<sim::Decomposition> ranks);
@@ -124,8 +124,10 @@ class Simulation {
   double lastDt() const;
   std::uint64_t removedCount() const;  // fluid particles that left the domain or drained
   std::uint64_t emittedCount() const;  // fluid particles the emitters put in
-  // Times the scene's "clamp" policy put a particle back into the domain (particle-steps).
+  // Times the scene's "clamp" policy put a particle back into the domain (particle-steps):
+  // this process's in a run across processes, whose stats() has every process's.
   std::uint64_t clampedCount() const;
+  // The fluid particles: this process's own in a run across processes (distribute).
   std::uint64_t fluidCount() const;
   const char* backendName() const;  // "cpu" or "cuda"
   const Scene& scene() const;

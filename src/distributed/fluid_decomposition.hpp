@@ -29,6 +29,7 @@ class FluidDecomposition final : public sim::Decomposition {
 
   int rank() const override { return comm_.rank(); }
   int size() const override { return comm_.size(); }
+  std::size_t owned() const override { return ghostRows_.empty() ? 0 : ghostRows_.front(); }
   sim::Exchanged exchange(sim::HostFluidState& state,
                           const sim::ExchangeSettings& settings) override;
   sim::GhostDensities ghostDensities(const sim::HostDensities& densities) override;

@@ -38,6 +38,8 @@ class Decomposition {
   virtual ~Decomposition() = default;
   virtual int rank() const = 0;
   virtual int size() const = 0;
+  // The particles this process owned after the last exchange (its ghosts aside).
+  virtual std::size_t owned() const = 0;
 
   // Before the grid: `state` holds this process's particles as its engine has them (ghosts
   // marked, fluid::isGhost); afterwards, the particles it owns now, then the ghosts of the

@@ -31,6 +31,7 @@ void Simulation::distribute(std::shared_ptr<sim::Decomposition> ranks) {
   Impl& s = *impl_;
   if (!ranks) throw std::invalid_argument("distribute: expected a decomposition, got null");
   if (s.clock.steps != 0) throw std::logic_error("distribute: call it before the first step");
+  if (s.ranks) throw std::logic_error("distribute: this simulation is divided already");
   const Scene& scene = s.scene;
   const auto refuse = [&](const std::string& what) {
     throw InputError(scene.sourcePath + ": " + what +

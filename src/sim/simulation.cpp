@@ -137,7 +137,7 @@ std::uint64_t Simulation::clampedCount() const {
   return impl_->counts.clamped;
 }
 std::uint64_t Simulation::fluidCount() const {
-  return impl_->engine->fluidCount();
+  return impl_->ranks ? impl_->ranks->owned() : impl_->engine->fluidCount();
 }
 const char* Simulation::backendName() const {
   return impl_->engine->backendName();

@@ -24,8 +24,9 @@ void Simulation::saveState(std::ostream& out) const {
         "saveState: an attached object engine's objects are its own state, not the "
         "simulation's: a saved state could not put them back");
   if (s.ranks)
-    throw std::logic_error("saveState: a run across processes is not yet saved (each process "
-                           "holds its part and copies of its neighbours')");
+    throw std::logic_error(
+        "saveState: a run across processes is not yet saved (each process "
+        "holds its part and copies of its neighbours')");
   sim::StateWriter w;
   sim::fingerprintOf(s.scene, s.counts.initialFluid, s.engine->wallCount(),
                      s.calibration.objectParticles)

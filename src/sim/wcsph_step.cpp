@@ -13,8 +13,8 @@ std::vector<Simulation::Impl::Stage> Simulation::Impl::wcsphStages() const {
     list.push_back({"exchange particles", &StepProfile::exchange, &Impl::exchangeParticles});
   list.push_back({"build grid", &StepProfile::buildGrid, &Impl::buildGrid});
   list.push_back({"density and pressure", &StepProfile::densityPressure, &Impl::sumDensity});
-  // A ghost at the halo's edge misses neighbours: its owner's density is the right one, for
-  // the continuity pass's diffusion as for the forces.
+  // The passes skip ghosts: each takes the density its owner computed, for the continuity
+  // pass's diffusion as for the forces.
   const Stage ghostDensities{"ghost densities", &StepProfile::exchange, &Impl::refreshGhosts};
   // With continuity the sums only list the neighbours; the density is integrated.
   if (params.continuityDensity) {

@@ -137,6 +137,7 @@ void expectSameRunAsOneProcess(const Scene& scene) {
   }
   const ParticleFrame mine = many.frame(false);
   EXPECT_EQ(differing(mine, one.frame(false)), 0u) << "of " << mine.size() << " owned here";
+  EXPECT_EQ(many.fluidCount(), mine.size());
   EXPECT_EQ(world.sum(std::uint64_t(mine.size())), std::uint64_t(n));
   // The statistics are every process's.
   const FrameStats all = many.stats(), alone = one.stats();

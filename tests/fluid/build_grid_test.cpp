@@ -42,6 +42,32 @@ TEST(BuildGridStage, SortsByCellAndKeepsEachParticlesState) {
   for (std::size_t k = 0; k < n; ++k) ASSERT_EQ(ids[k], k);
 }
 
+// Shared by a distributed run's processes: the grid spans the bounds given, and each cell's
+// particles are in id order (ghost bit aside) whatever order they came in.
+TEST(BuildGridStage, ASharedGridSpansTheBoundsGivenAndOrdersEachCellById) {
+  const Lattice lattice = jitteredLattice(1.0f, 0.4f, 1.0f, 5);
+  Fluid fluid(lattice, KernelKind::Muller, ViscosityModel::Artificial);
+  const std::size_t n = lattice.position.size();
+  // Reversed ids, every third a ghost: a sort keeping the input order would list each cell's
+  // particles by falling id.
+  for (std::size_t i = 0; i < n; ++i)
+    fluid.particles.id.data()[i] = std::uint32_t(n - 1 - i) | (i % 3 == 0 ? kGhostBit : 0u);
+  fluid.grid.shared = true;
+  fluid.grid.sharedLo = Vec3{-0.5f, -0.5f, -0.5f};
+  fluid.grid.sharedHi = Vec3{1.5f, 1.5f, 1.5f};
+  EXPECT_EQ(buildGrid(fluid.particles, fluid.grid, fluid.domain), 0u);
+  EXPECT_EQ(fluid.grid.spec.origin.x, -0.5f);
+  const std::uint32_t* id = fluid.particles.id.data();  // reordered by the sort
+  const std::uint32_t* start = fluid.grid.cellStart.data();
+  std::size_t ordered = 0;
+  for (std::uint32_t c = 0; c < fluid.grid.spec.cellCount; ++c)
+    for (std::uint32_t k = start[c] + 1; k < start[c + 1]; ++k) {
+      ASSERT_LT(id[k - 1] & ~kGhostBit, id[k] & ~kGhostBit) << "cell " << c;
+      ++ordered;
+    }
+  EXPECT_GT(ordered, n / 2);  // cells of several particles were ordered
+}
+
 TEST(BuildGridStage, RemovesWhatLeftTheDomainOrEnteredAnOutlet) {
   const Lattice lattice = jitteredLattice(1.0f, 0.0f, 0.0f, 4);
   Fluid fluid(lattice, KernelKind::Muller, ViscosityModel::Artificial);
