@@ -281,31 +281,51 @@ sim::GhostDensities FluidDecomposition::ghostDensities(const sim::HostDensities&
   // Where the grid put each row of the state the exchange gave.
   std::vector<std::uint32_t> rowNow(order.size());
   for (std::size_t j = 0; j < order.size(); ++j) rowNow[order[j]] = std::uint32_t(j);
+  sentRowsNow_.clear();
+  for (const std::vector<std::uint32_t>& rows : sentRows_)
+    for (std::uint32_t row : rows) sentRowsNow_.push_back(rowNow[row]);
+  ghostRowsNow_.clear();
+  for (std::size_t row = ghostRows_.front(); row < uploaded_; ++row)
+    ghostRowsNow_.push_back(rowNow[row]);
+  std::vector<float> sent(sentRowsNow_.size());
+  for (std::size_t k = 0; k < sent.size(); ++k) sent[k] = densities.density[sentRowsNow_[k]];
+  return {ghostRowsNow_, exchange(sent, 1)};
+}
+
+std::vector<float> FluidDecomposition::exchange(const std::vector<float>& sent,
+                                                std::uint32_t width) {
+  if (sent.size() != sentRowsNow_.size() * width)
+    throw std::logic_error("ghost exchange: " + std::to_string(sent.size()) + " values for " +
+                           std::to_string(sentRowsNow_.size()) + " rows of " +
+                           std::to_string(width));
   std::vector<std::vector<std::byte>> send(sentRows_.size());
+  std::size_t at = 0;
   for (std::size_t r = 0; r < send.size(); ++r) {
-    send[r].resize(sentRows_[r].size() * sizeof(float));
-    for (std::size_t k = 0; k < sentRows_[r].size(); ++k)
-      std::memcpy(send[r].data() + k * sizeof(float), &densities.density[rowNow[sentRows_[r][k]]],
-                  sizeof(float));
+    const std::size_t values = sentRows_[r].size() * width;
+    send[r].resize(values * sizeof(float));
+    if (values) std::memcpy(send[r].data(), sent.data() + at, values * sizeof(float));
+    at += values;
   }
   const std::vector<std::vector<std::byte>> arrived = comm_.exchange(send);
-  sim::GhostDensities out;
-  out.rows.reserve(uploaded_ - ghostRows_.front());
-  out.density.reserve(uploaded_ - ghostRows_.front());
+  std::vector<float> out(ghostRowsNow_.size() * width);
+  at = 0;
   for (std::size_t r = 0; r < arrived.size(); ++r) {
-    const std::size_t count = ghostRows_[r + 1] - ghostRows_[r];
-    if (arrived[r].size() != count * sizeof(float))
-      throw std::runtime_error("ghost densities: rank " + std::to_string(r) + " sent " +
+    const std::size_t values = std::size_t(ghostRows_[r + 1] - ghostRows_[r]) * width;
+    if (arrived[r].size() != values * sizeof(float))
+      throw std::runtime_error("ghost exchange: rank " + std::to_string(r) + " sent " +
                                std::to_string(arrived[r].size()) + " bytes for " +
-                               std::to_string(count) + " ghosts");
-    for (std::size_t k = 0; k < count; ++k) {
-      float rho = 0.0f;
-      std::memcpy(&rho, arrived[r].data() + k * sizeof(float), sizeof rho);
-      out.rows.push_back(rowNow[ghostRows_[r] + k]);
-      out.density.push_back(rho);
-    }
+                               std::to_string(values) + " values");
+    if (values) std::memcpy(out.data() + at, arrived[r].data(), values * sizeof(float));
+    at += values;
   }
   return out;
+}
+
+void FluidDecomposition::reduce(std::uint64_t& sum, std::uint64_t& count, std::uint64_t& largest) {
+  sum = comm_.sum(sum);
+  count = comm_.sum(count);
+  // Errors are below 2^36 in fixed point: exact as doubles.
+  largest = std::uint64_t(comm_.max(double(largest)));
 }
 
 fluid::StepMeasures FluidDecomposition::combine(const fluid::StepMeasures& local) {

@@ -23,7 +23,7 @@ struct DecompositionSettings {
   double rebalanceAt = 1.05;
 };
 
-class FluidDecomposition final : public sim::Decomposition {
+class FluidDecomposition final : public sim::Decomposition, public fluid::SolverGhosts {
  public:
   FluidDecomposition(const Communicator& comm, const DecompositionSettings& settings);
 
@@ -39,6 +39,13 @@ class FluidDecomposition final : public sim::Decomposition {
   double sum(double local) override { return comm_.sum(local); }
   double max(double local) override { return comm_.max(local); }
   DistributedStats stats() const override;
+  fluid::SolverGhosts& solverGhosts() override { return *this; }
+
+  // fluid::SolverGhosts: the rows ghostDensities found, valid until the next exchange.
+  const std::vector<std::uint32_t>& sentRows() const override { return sentRowsNow_; }
+  const std::vector<std::uint32_t>& ghostRows() const override { return ghostRowsNow_; }
+  std::vector<float> exchange(const std::vector<float>& sent, std::uint32_t width) override;
+  void reduce(std::uint64_t& sum, std::uint64_t& count, std::uint64_t& largest) override;
 
  private:
   Communicator comm_;
@@ -54,6 +61,8 @@ class FluidDecomposition final : public sim::Decomposition {
   std::vector<std::vector<std::uint32_t>> sentRows_;
   std::vector<std::uint32_t> ghostRows_;
   std::size_t uploaded_ = 0;
+  // The same rows after the grid: the sent, by destination, and the ghosts, by source.
+  std::vector<std::uint32_t> sentRowsNow_, ghostRowsNow_;
   DistributedStats stats_;
   double ghostShareSum_ = 0.0, migratedSum_ = 0.0;
 };

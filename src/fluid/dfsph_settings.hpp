@@ -3,8 +3,27 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace sph::fluid {
+
+// A distributed run's ghosts (particles.hpp) in an iterating solve: after each pass the ghosts'
+// rows take the values their owners' rows have just been given, and the solve's error is every
+// process's, so that every process iterates as one would. The transport is the caller's
+// (sim/decomposition.hpp).
+class SolverGhosts {
+ public:
+  virtual ~SolverGhosts() = default;
+  // The rows whose values other processes hold as ghosts, and this process's ghosts' rows, in
+  // the orders exchange takes and gives their values.
+  virtual const std::vector<std::uint32_t>& sentRows() const = 0;
+  virtual const std::vector<std::uint32_t>& ghostRows() const = 0;
+  // `width` values for each sent row; returns `width` values for each ghost row. Collective.
+  virtual std::vector<float> exchange(const std::vector<float>& sent, std::uint32_t width) = 0;
+  // This process's error sum, particles counted and largest error in, every process's out.
+  // Collective.
+  virtual void reduce(std::uint64_t& sum, std::uint64_t& count, std::uint64_t& largest) = 0;
+};
 
 // What the predicted error is measured against.
 enum class SolverTarget {
@@ -23,6 +42,8 @@ struct SolverSettings {
   // The share of the coarse level's K (coarse_pressure.hpp) the density solve adds to its first
   // iteration; 0: none.
   float coarseShare = 0.0f;
+  // A distributed run's; none in one process.
+  SolverGhosts* ghosts = nullptr;
 };
 
 struct SolverReport {

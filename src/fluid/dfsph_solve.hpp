@@ -127,23 +127,67 @@ void endSolve(FluidParticles<B>& fluid, SolverTarget target, float dt) {
       });
 }
 
-// The average of the last rate pass's errors, summed in fixed point (kErrorScale).
-template <class B>
-float averageError(const FluidParticles<B>& fluid) {
-  const std::uint64_t* error = fluid.solverError.data();
-  const std::uint64_t sum = B::reduce(
-      fluid.count, std::uint64_t{0}, SPH_LAMBDA(std::size_t i) { return error[i]; },
-      SPH_LAMBDA(std::uint64_t a, std::uint64_t b) { return a + b; });
-  return float(double(sum) / kErrorScale / double(fluid.count));
-}
+// The last rate pass's errors, summed in fixed point (kErrorScale): their average and the
+// largest, over a distributed run's every process (their ghosts left out: the owners count
+// them).
+struct ErrorSums {
+  std::uint64_t sum = 0, count = 0, largest = 0;
+};
 
 template <class B>
-float largestError(const FluidParticles<B>& fluid) {
+ErrorSums errorSums(const FluidParticles<B>& fluid, SolverGhosts* ghosts) {
   const std::uint64_t* error = fluid.solverError.data();
-  const std::uint64_t largest = B::reduce(
-      fluid.count, std::uint64_t{0}, SPH_LAMBDA(std::size_t i) { return error[i]; },
-      SPH_LAMBDA(std::uint64_t a, std::uint64_t b) { return a > b ? a : b; });
-  return float(double(largest) / kErrorScale);
+  const std::uint32_t* id = fluid.id.data();
+  ErrorSums s = B::reduce(
+      fluid.count, ErrorSums{},
+      SPH_LAMBDA(std::size_t i) {
+        return isGhost(id[i]) ? ErrorSums{} : ErrorSums{error[i], 1, error[i]};
+      },
+      SPH_LAMBDA(const ErrorSums& a, const ErrorSums& b) {
+        return ErrorSums{a.sum + b.sum, a.count + b.count,
+                         a.largest > b.largest ? a.largest : b.largest};
+      });
+  if (ghosts) ghosts->reduce(s.sum, s.count, s.largest);
+  return s;
+}
+
+inline float averageError(const ErrorSums& s) {
+  return s.count ? float(double(s.sum) / kErrorScale / double(s.count)) : 0.0f;
+}
+
+// A distributed run: fields [first, first + fields) of each ghost's record as its owner's.
+template <class B>
+void refreshGhostRecords(typename B::template Buffer<float>& records, std::uint32_t first,
+                         std::uint32_t fields, SolverGhosts& ghosts) {
+  const std::vector<std::uint32_t>& sentRows = ghosts.sentRows();
+  const std::vector<std::uint32_t>& ghostRows = ghosts.ghostRows();
+  typename B::template Buffer<std::uint32_t> rows;
+  typename B::template Buffer<float> values;
+  float* r = records.data();
+  std::vector<float> sent(sentRows.size() * fields);
+  if (!sentRows.empty()) {
+    B::upload(rows, sentRows.data(), sentRows.size());
+    values.resize(sent.size());
+    const std::uint32_t* row = rows.data();
+    float* v = values.data();
+    B::forEach(
+        sentRows.size(), SPH_LAMBDA(std::size_t k) {
+          for (std::uint32_t c = 0; c < fields; ++c)
+            v[k * fields + c] = r[kRecordFields * row[k] + first + c];
+        });
+    B::download(values, sent.data(), sent.size());
+  }
+  const std::vector<float> arrived = ghosts.exchange(sent, fields);
+  if (ghostRows.empty()) return;
+  B::upload(rows, ghostRows.data(), ghostRows.size());
+  B::upload(values, arrived.data(), arrived.size());
+  const std::uint32_t* row = rows.data();
+  const float* v = values.data();
+  B::forEach(
+      ghostRows.size(), SPH_LAMBDA(std::size_t k) {
+        for (std::uint32_t c = 0; c < fields; ++c)
+          r[kRecordFields * row[k] + first + c] = v[k * fields + c];
+      });
 }
 
 template <class B, class Kernels>
@@ -175,11 +219,23 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
   const float* velocityRecords = fluid.velocityRecords.data();
   const float* stiffnessRecords = fluid.stiffnessRecords.data();
   float* gradients = fluid.pairGradient.size() != 0 ? fluid.pairGradient.data() : nullptr;
+  // Across processes, after each pass: the ghosts' velocities (the passes skip ghosts, and a
+  // ghost's predicted velocity reads an acceleration its owner computed) or their K.
+  SolverGhosts* ghosts = settings.ghosts;
+  const auto shareVelocities = [&] {
+    if (ghosts) refreshGhostRecords<B>(fluid.velocityRecords, SolverRecord::kVX, 3, *ghosts);
+  };
+  const auto shareStiffness = [&] {
+    if (ghosts) refreshGhostRecords<B>(fluid.stiffnessRecords, SolverRecord::kK, 1, *ghosts);
+  };
+  shareVelocities();
   // Only the density solve starts warm: the divergence solve comes first in a step, and its
   // first pass finds the step's factors and wall gradients that a warm start would need.
-  if (settings.warmStart && target == SolverTarget::RestDensity)
+  if (settings.warmStart && target == SolverTarget::RestDensity) {
     runPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, params.periodic, walk,
             correct, gradients);
+    shareVelocities();
+  }
   SolverReport report;
   for (;;) {
     if (report.iterations == 0 && target == SolverTarget::NoDivergence) {
@@ -193,21 +249,24 @@ SolverReport iterate(FluidParticles<B>& fluid, const Grid<B>& grid,
       runPass(fluid, grid, boundary, objects, velocityRecords, kernels, params.periodic, walk, rate,
               gradients);
     }
-    report.averageError = averageError(fluid);
+    shareStiffness();
+    const ErrorSums errors = errorSums(fluid, ghosts);
+    report.averageError = averageError(errors);
     const bool done =
         report.iterations >= settings.minIterations && report.averageError <= settings.tolerance;
     if (done || report.iterations >= settings.maxIterations) {
       report.converged = done;
-      report.largestError = largestError(fluid);
+      report.largestError = float(double(errors.largest) / kErrorScale);
       return report;
     }
     // The smooth part of the error, at once (coarse_pressure.hpp): where Jacobi alone took 10.5
     // iterations a step in the dam break, with it 7.3; 21.7 and 11.6 at 67,626 particles.
     if (report.iterations == 0 && target == SolverTarget::RestDensity &&
-        settings.coarseShare > 0.0f)
+        settings.coarseShare > 0.0f && !ghosts)
       addCoarseCorrection(fluid, grid, boundary, params, dt, settings.coarseShare, coarse);
     runPass(fluid, grid, boundary, objects, stiffnessRecords, kernels, params.periodic, walk,
             correct, gradients);
+    shareVelocities();
     ++report.iterations;
   }
 }
@@ -222,7 +281,8 @@ SolverReport solve(FluidParticles<B>& fluid, const Grid<B>& grid,
                    const FluidParameters& params, const SolverSettings& settings,
                    SolverTarget target, float dt, NeighborWalk walk, CoarsePressure& coarse) {
   SolverReport report;
-  if (fluid.count == 0) return report;
+  // A distributed run's process with no particles still takes part in every exchange.
+  if (fluid.count == 0 && !settings.ghosts) return report;
   detail::beginSolve(fluid, target, dt, settings.warmStart, params.restDensity);
   withKernels(params, [&](auto kernels) {
     report = detail::iterate(fluid, grid, boundary, objects, params, settings, target, dt, walk,

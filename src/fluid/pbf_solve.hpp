@@ -218,8 +218,11 @@ SolverReport solvePositions(FluidParticles<B>& fluid, const Grid<B>& grid,
     }
   });
   report.iterations = settings.iterations;
-  report.averageError = settings.iterations > 0 ? detail::averageError(fluid) : 0.0f;
-  report.largestError = settings.iterations > 0 ? detail::largestError(fluid) : 0.0f;
+  if (settings.iterations > 0) {
+    const detail::ErrorSums errors = detail::errorSums(fluid, nullptr);
+    report.averageError = detail::averageError(errors);
+    report.largestError = float(double(errors.largest) / kErrorScale);
+  }
   report.converged = true;
   if (settings.iterations > 0) detail::keepSolvedDensity(fluid, params.restDensity);
   report.clamped =

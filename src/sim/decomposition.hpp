@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "fluid/dfsph_settings.hpp"
 #include "fluid/measure_step.hpp"
 #include "sim/fluid_engine.hpp"
 #include "sph/distributed_stats.hpp"
@@ -58,6 +59,8 @@ class Decomposition {
   virtual double max(double local) = 0;
 
   virtual DistributedStats stats() const = 0;
+  // The incompressible solver's ghosts, valid from ghostDensities to the next exchange.
+  virtual fluid::SolverGhosts& solverGhosts() = 0;
 };
 
 }  // namespace sph::sim

@@ -15,8 +15,13 @@ std::vector<Simulation::Impl::Stage> Simulation::Impl::dfsphStages() const {
   // Boundary particles are read before the density pass that counts them.
   if (coupling.asBoundary())
     list.push_back({"objects as boundary", &StepProfile::interaction, &Impl::receiveObjects});
+  // Across processes (as in the weakly compressible step), and the solves' ghosts refreshed
+  // after each of their passes (fluid::SolverGhosts).
+  if (ranks)
+    list.push_back({"exchange particles", &StepProfile::exchange, &Impl::exchangeParticles});
   list.push_back({"build grid", &StepProfile::buildGrid, &Impl::buildGrid});
   list.push_back({"density", &StepProfile::densityPressure, &Impl::sumDensity});
+  if (ranks) list.push_back({"ghost densities", &StepProfile::exchange, &Impl::refreshGhosts});
   // Left out by the scene, it still makes its first pass: the step's factors, which the
   // density solve needs, and the error it reports.
   list.push_back({"divergence solve", &StepProfile::divergenceSolve, &Impl::solveDivergence});
@@ -60,6 +65,11 @@ fluid::SolverSettings Simulation::Impl::solverSettings(fluid::SolverTarget targe
     s.minIterations = s.maxIterations = 0;
   s.warmStart = d.warmStart;
   s.coarseShare = float(d.coarseCorrection);
+  // The coarse level is one solve over the whole fluid: not yet across processes.
+  if (ranks) {
+    s.coarseShare = 0.0f;
+    s.ghosts = &ranks->solverGhosts();
+  }
   // Six tenths of a full neighbourhood on the initial lattice: (4/3) π (h/d)³ neighbours.
   const double ratio = scene.fluid.supportRatio;
   s.minNeighbours = std::uint32_t(std::lround(0.6 * 4.0 / 3.0 * kPi * ratio * ratio * ratio));

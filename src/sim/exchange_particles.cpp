@@ -37,9 +37,7 @@ void Simulation::distribute(std::shared_ptr<sim::Decomposition> ranks) {
     throw InputError(scene.sourcePath + ": " + what +
                      ": not yet run across processes; run this scene in one process");
   };
-  if (scene.fluid.solver != FluidSolver::Wcsph)
-    refuse(std::string("fluid.solver is \"") +
-           (scene.fluid.solver == FluidSolver::Dfsph ? "dfsph" : "pbf") + "\"");
+  if (scene.fluid.solver == FluidSolver::Pbf) refuse("fluid.solver is \"pbf\"");
   if (!scene.objects.empty()) refuse("the scene has objects");
   if (s.coupling.externalExchange) refuse("an object engine is attached");
   if (!scene.emitters.empty()) refuse("the scene has emitters");

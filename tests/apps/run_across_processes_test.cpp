@@ -141,7 +141,7 @@ TEST_F(RunAcrossProcesses, AFailureEndsEveryProcessWithTheRunsCodeAndKeepsTheFra
 }
 
 TEST_F(RunAcrossProcesses, SaysOnceWhatIsNotYetRunAcrossProcesses) {
-  const CommandResult r = runAcross(2, run(dir_ / "dfsph", "--set fluid.solver=dfsph"));
+  const CommandResult r = runAcross(2, run(dir_ / "pbf", "--set fluid.solver=pbf"));
   EXPECT_EQ(r.code, 2) << r.output;
   const std::string said = "not yet run across processes";
   const std::size_t first = r.output.find(said);
