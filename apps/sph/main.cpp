@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"rcb", "hsfc"}));
   runCmd
       ->add_option("--rebalance-at", run.rebalanceAt,
-                   "Under mpirun: partition again when the busiest process's particles over the "
+                   "Under mpirun: partition again when the busiest process's work over the "
                    "mean have grown this many times since the last partition (default: 1.05)")
       ->check(CLI::Range(1.0, 100.0));
   runCmd->add_flag("--render", run.render,

@@ -24,8 +24,9 @@ bool startedAmongProcesses();
 
 struct DistributeSettings {
   std::string partition = "rcb";  // Zoltan's method: "rcb" (boxes) or "hsfc" (Hilbert curve)
-  // How far the busiest process's particles over the mean may drift from what they were right
-  // after the last partition before the particles are partitioned again: at least 1.
+  // How far the busiest process's work over the mean (its particles weighed by the neighbours
+  // each listed) may drift from what it was right after the last partition before the
+  // particles are partitioned again: at least 1.
   double rebalanceAt = 1.05;
 };
 

@@ -13,9 +13,18 @@ namespace sph::distributed {
 namespace {
 
 // A particle's record: position, velocity, acceleration (4 floats each), density, pressure,
-// and the incompressible solver's warm start (4) where it runs.
-constexpr int kFields = 14;
+// its work, and the incompressible solver's warm start (4) where it runs.
+constexpr int kFields = 15;
+constexpr int kWork = 14;
 constexpr int kWarmStartFields = 4;
+
+// A particle's work: the neighbours its last density pass listed, one for none (a lone
+// particle still costs its walk), and a full neighbourhood's worth past the list's room.
+float workOf(const sim::HostFluidState& s, std::size_t i) {
+  if (s.neighbours.size() <= i) return 1.0f;
+  const std::uint32_t n = s.neighbours[i];
+  return n == fluid::kNeighborOverflow ? 128.0f : float(n > 0 ? n : 1);
+}
 
 // The rows' records, in their order: the state's particle ids (ghost bit clear) and fields.
 ParticleRecords packRows(const sim::HostFluidState& s, const std::vector<std::uint32_t>& rows) {
@@ -33,9 +42,16 @@ ParticleRecords packRows(const sim::HostFluidState& s, const std::vector<std::ui
     std::memcpy(v + 8, &p.acceleration[i], sizeof(Vec4));
     v[12] = p.density[i];
     v[13] = p.pressure[i];
+    v[kWork] = workOf(s, i);
     if (!s.warmStart.empty()) std::memcpy(v + kFields, &s.warmStart[i], sizeof(Vec4));
   }
   return out;
+}
+
+std::vector<float> workOf(const ParticleRecords& r) {
+  std::vector<float> work(r.size());
+  for (std::size_t i = 0; i < r.size(); ++i) work[i] = r.of(i)[kWork];
+  return work;
 }
 
 // Keeps the records whose `stays` is set, in their order, moving each at most once.
@@ -200,7 +216,7 @@ sim::Exchanged FluidDecomposition::exchange(sim::HostFluidState& state,
   const bool cut = !partitioned_ || imbalance_ > settings_.rebalanceAt * balanceWhenCut_;
   if (cut) {
     if (partitioned_) ++stats_.repartitions;
-    partitioner_.assign(points, {});
+    partitioner_.assign(points, workOf(owned));
     partitioned_ = true;
   }
   // By the cuts alone, also right after cutting: Zoltan's own answer may split the particles
@@ -248,20 +264,22 @@ sim::Exchanged FluidDecomposition::exchange(sim::HostFluidState& state,
   writeState(state, owned, ghosts);
   uploaded_ = owned.size() + ghosts.size();
 
-  // The run's figures, in one collective: removed, migrated, owned, ghosts over owned.
+  // The run's figures, in one collective: removed, migrated, work, ghosts over owned.
+  double work = 0.0;
+  for (std::size_t i = 0; i < owned.size(); ++i) work += owned.of(i)[kWork];
   const std::vector<double> all = comm_.gather(
-      std::vector<double>{double(removed), double(migrated), double(owned.size()),
+      std::vector<double>{double(removed), double(migrated), work,
                           owned.size() ? double(ghosts.size()) / double(owned.size()) : 0.0});
-  double totalRemoved = 0, stepMigrated = 0, totalOwned = 0, busiest = 0, ghostShare = 0;
+  double totalRemoved = 0, stepMigrated = 0, totalWork = 0, busiest = 0, ghostShare = 0;
   for (std::size_t k = 0; k < all.size(); k += 4) {
     totalRemoved += all[k];
     stepMigrated += all[k + 1];
-    totalOwned += all[k + 2];
+    totalWork += all[k + 2];
     busiest = std::max(busiest, all[k + 2]);
     ghostShare += all[k + 3] / ranks;
   }
   out.removed = std::uint64_t(totalRemoved);
-  imbalance_ = totalOwned > 0 ? busiest * ranks / totalOwned : 1.0;
+  imbalance_ = totalWork > 0 ? busiest * ranks / totalWork : 1.0;
   if (cut) balanceWhenCut_ = imbalance_;
   ++stats_.exchanges;
   // The first exchange hands out the starting shares: not a migration.

@@ -1,9 +1,10 @@
 // The fluid across MPI processes (sim/decomposition.hpp, over this layer's partitioner and
-// exchanges): Zoltan's cuts give each process its part; a particle that crosses a cut moves
-// with all its fields and its id; copies of the particles within a support radius of another
-// part are sent there as ghosts each step, and their densities again after the density pass.
-// The cuts are kept from step to step and made again when the load has drifted: the busiest
-// process's share of the mean more than `rebalanceAt` times what it was right after the last
+// exchanges): Zoltan's cuts give each process its part, balancing the work (each particle
+// weighed by the neighbours its last density pass listed); a particle that crosses a cut moves
+// with all its fields and its id; copies of the particles in the cells next to another part
+// are sent there as ghosts each step, and their densities again after the density pass. The
+// cuts are kept from step to step and made again when the load has drifted: the busiest
+// process's work over the mean more than `rebalanceAt` times what it was right after the last
 // cuts.
 #pragma once
 
@@ -18,7 +19,7 @@ namespace sph::distributed {
 
 struct DecompositionSettings {
   PartitionMethod method = PartitionMethod::Rcb;
-  // How far the busiest process's particles over the mean may drift from their value right
+  // How far the busiest process's work over the mean may drift from its value right
   // after the last partition before the cuts are made again (docs/distributed.md).
   double rebalanceAt = 1.05;
 };

@@ -157,10 +157,4 @@ std::vector<int> GeometricPartitioner::owners(const std::vector<float>& points) 
   return owner;
 }
 
-double imbalance(const Communicator& comm, double localWork) {
-  const double total = comm.sum(localWork);
-  const double busiest = comm.max(localWork);
-  return total > 0.0 ? busiest * comm.size() / total : 1.0;
-}
-
 }  // namespace sph::distributed

@@ -42,7 +42,4 @@ class GeometricPartitioner {
   std::unique_ptr<Impl> impl_;
 };
 
-// The ratio of the busiest rank's work to the mean (1: perfectly balanced), over all ranks.
-double imbalance(const Communicator& comm, double localWork);
-
 }  // namespace sph::distributed

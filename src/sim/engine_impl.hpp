@@ -241,6 +241,7 @@ class EngineImpl final : public FluidEngine {
     };
     copy(fluid_.warmStart, s.warmStart, fluid_.warmStart.size() != 0 ? n : 0);
     copy(fluid_.externalById, s.externalById, fluid_.externalById.size());
+    copy(fluid_.neighborCount, s.neighbours, fluid_.neighborCount.size() >= n ? n : 0);
     s.drainedByOutlet = drained_;
     s.densityIsState = fluid_.densityIsState;
     return s;

@@ -72,6 +72,10 @@ struct HostFluidState {
   std::vector<Vec4> externalById;  // empty when unused
   std::vector<std::uint64_t> drainedByOutlet;
   bool densityIsState = false;
+  // The neighbours each particle's last density pass listed (fluid::kNeighborOverflow: too many
+  // to list): its work, by which a distributed run balances its processes. Not state: a state
+  // put back leaves it out.
+  std::vector<std::uint32_t> neighbours;
 };
 
 // A distributed run's ghost refresh: the density pass's result in the engine's order, and

@@ -42,6 +42,7 @@ CommandResult runAcross(int ranks, const std::string& arguments) {
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
+  setenv("OMPI_MCA_mpi_yield_when_idle", "1", 1);
   setenv("OMPI_MCA_mca_base_component_disable_dlclose", "1", 1);
 #ifdef SPH_TESTS_SANITIZED
   // OpenMPI's own lasting allocations are named and suppressed; ours are still checked.
